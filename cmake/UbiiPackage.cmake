@@ -1,0 +1,14 @@
+# find_package(ubii) config files and a pkg-config file, installed beside the libraries.
+include(CMakePackageConfigHelpers)
+
+set(UBII_CMAKE_INSTALL_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/ubii")
+install(EXPORT ubiiTargets NAMESPACE ubii:: DESTINATION "${UBII_CMAKE_INSTALL_DIR}")
+configure_package_config_file(cmake/ubiiConfig.cmake.in "${CMAKE_CURRENT_BINARY_DIR}/ubiiConfig.cmake"
+                              INSTALL_DESTINATION "${UBII_CMAKE_INSTALL_DIR}")
+write_basic_package_version_file("${CMAKE_CURRENT_BINARY_DIR}/ubiiConfigVersion.cmake"
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES "${CMAKE_CURRENT_BINARY_DIR}/ubiiConfig.cmake" "${CMAKE_CURRENT_BINARY_DIR}/ubiiConfigVersion.cmake"
+        DESTINATION "${UBII_CMAKE_INSTALL_DIR}")
+
+configure_file(cmake/ubii.pc.in "${CMAKE_CURRENT_BINARY_DIR}/ubii.pc" @ONLY)
+install(FILES "${CMAKE_CURRENT_BINARY_DIR}/ubii.pc" DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
