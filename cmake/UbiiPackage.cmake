@@ -10,5 +10,9 @@ write_basic_package_version_file("${CMAKE_CURRENT_BINARY_DIR}/ubiiConfigVersion.
 install(FILES "${CMAKE_CURRENT_BINARY_DIR}/ubiiConfig.cmake" "${CMAKE_CURRENT_BINARY_DIR}/ubiiConfigVersion.cmake"
         DESTINATION "${UBII_CMAKE_INSTALL_DIR}")
 
+# Relocatable: the prefix is found from where the .pc file lies, so `cmake --install --prefix` works.
+file(RELATIVE_PATH UBII_PC_TO_PREFIX "/root/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/root")
+string(REGEX REPLACE "/$" "" UBII_PC_TO_PREFIX "${UBII_PC_TO_PREFIX}")
+list(JOIN UBII_SANITIZE_LINK_FLAGS " " UBII_PC_LINK_FLAGS)
 configure_file(cmake/ubii.pc.in "${CMAKE_CURRENT_BINARY_DIR}/ubii.pc" @ONLY)
 install(FILES "${CMAKE_CURRENT_BINARY_DIR}/ubii.pc" DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The test command: installs what is missing (Debian packages, npm packages), builds libubii twice
+# (plain, and with AddressSanitizer + UndefinedBehaviorSanitizer) and runs the whole suite on each,
+# inside a private network namespace where a real master is started and stopped by the tests.
+#
+#   scripts/test.sh            build trees in ./build/test and ./build/asan
+#   UBII_BUILD_DIR=DIR ...     build trees below DIR instead
+#   UBII_CACHE_DIR=DIR ...     fetched sources and npm packages in DIR (default ~/.cache/libubii)
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+build_root=${UBII_BUILD_DIR:-$root/build}
+jobs=$(nproc 2>/dev/null || echo 2)
+started=$SECONDS
+
+"$root/scripts/bootstrap.sh"
+
+run_configuration() {
+  local name=$1; shift
+  local dir="$build_root/$name"
+  echo "=== $name: configure and build in $dir"
+  cmake -S "$root" -B "$dir" -DUBII_BUILD_TESTS=ON -DUBII_BUILD_EXAMPLES=ON "$@" >"$dir.configure.log" 2>&1 ||
+    { cat "$dir.configure.log"; return 1; }
+  cmake --build "$dir" -j "$jobs"
+  echo "=== $name: tests"
+  "$root/scripts/private-net.sh" ctest --test-dir "$dir" --output-on-failure -j "$jobs" --timeout 300
+}
+
+mkdir -p "$build_root"
+run_configuration test -DCMAKE_BUILD_TYPE=RelWithDebInfo
+run_configuration asan -DCMAKE_BUILD_TYPE=Debug -DUBII_SANITIZE=ON
+echo "=== all configurations passed in $((SECONDS - started)) s"

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the build tree BUILD_DIR into WORK/prefix, then builds and runs the consumer application
+# against it three ways: find_package with the static library, with the shared library, and
+# pkg-config.
+#   check_install.sh BUILD_DIR WORK
+set -euo pipefail
+build=${1:?} work=${2:?}
+here=$(cd "$(dirname "$0")" && pwd)
+rm -rf "$work"
+mkdir -p "$work"
+prefix="$work/prefix"
+
+cmake --install "$build" --prefix "$prefix" >"$work/install.log"
+
+cmake -S "$here" -B "$work/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" >"$work/configure.log"
+cmake --build "$work/cmake-build" >"$work/build.log"
+"$work/cmake-build/consumer_static"
+if nm -D "$work/cmake-build/consumer_static" 2>/dev/null | grep -q ubii_; then
+  echo "check_install: consumer_static resolves libubii symbols dynamically" >&2
+  exit 1
+fi
+libdir=$(dirname "$(find "$prefix" -name 'libubii.so' | head -n 1)")
+LD_LIBRARY_PATH="$libdir" "$work/cmake-build/consumer_shared"
+LD_LIBRARY_PATH="$libdir" ldd "$work/cmake-build/consumer_shared" | grep -q "$libdir/libubii.so" || {
+  echo "check_install: consumer_shared does not load $libdir/libubii.so" >&2
+  exit 1
+}
+
+flags=$(PKG_CONFIG_PATH="$libdir/pkgconfig" pkg-config --cflags --libs ubii)
+cc -std=c99 -Wall -Werror "$here/consumer.c" $flags -o "$work/consumer_pkgconfig"
+LD_LIBRARY_PATH="$libdir" "$work/consumer_pkgconfig"
+echo "check_install: find_package (static, shared) and pkg-config consumers work"
