@@ -15,6 +15,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 cache=${UBII_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/libubii}
 install_dir="$cache/npm/master"
 start_timeout=${UBII_MASTER_START_TIMEOUT:-20}
+bind_errors='Address already in use|EADDRINUSE|EACCES'
 
 usage() { sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 
@@ -67,15 +68,21 @@ case "${1:-}" in
     deadline=$((SECONDS + start_timeout))
     while [ $SECONDS -lt $deadline ]; do
       if grep -q 'status=ready' "$state/master.log" 2>/dev/null; then
-        echo "master.sh: master ready (pid $pid, ports $base-$((base + 3)))"
-        exit 0
+        # The master reports ready even when a ZMQ bind failed, and the HTTP server's EADDRINUSE
+        # arrives a moment later: give both time to show before calling it ready.
+        sleep 0.5
+        if kill -0 "$pid" 2>/dev/null && ! grep -qE "$bind_errors" "$state/master.log"; then
+          echo "master.sh: master ready (pid $pid, ports $base-$((base + 3)))"
+          exit 0
+        fi
+        break
       fi
       if ! kill -0 "$pid" 2>/dev/null || grep -q 'status=failed' "$state/master.log"; then
         break
       fi
       sleep 0.1
     done
-    echo "master.sh: the master did not become ready within ${start_timeout} s; its log:" >&2
+    echo "master.sh: the master did not start cleanly on ports $base-$((base + 3)) (limit ${start_timeout} s); its log:" >&2
     tail -n 40 "$state/master.log" >&2
     stop_pid "$pid"
     rm -f "$state/master.pid"
