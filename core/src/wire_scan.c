@@ -28,13 +28,22 @@ bool ubii_wire_scan_next(ubii_wire_scan *scan, ubii_wire_field *field, bool *mal
     field->wire_type = (int)wire_type;
     field->bytes = NULL;
     field->size = 0;
-    field->varint = 0;
+    field->scalar = 0;
 
     bool ok;
     switch (wire_type) {
     case PB_WT_VARINT:
-        ok = pb_decode_varint(&stream, &field->varint);
+        ok = pb_decode_varint(&stream, &field->scalar);
         break;
+    case PB_WT_64BIT:
+        ok = pb_decode_fixed64(&stream, &field->scalar);
+        break;
+    case PB_WT_32BIT: {
+        uint32_t bits = 0;
+        ok = pb_decode_fixed32(&stream, &bits);
+        field->scalar = bits;
+        break;
+    }
     case PB_WT_STRING: {
         uint32_t length;
         ok = pb_decode_varint32(&stream, &length) && length <= stream.bytes_left;

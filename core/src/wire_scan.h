@@ -14,7 +14,7 @@ typedef struct ubii_wire_field {
     int wire_type;        /* pb_wire_type_t */
     const uint8_t *bytes; /* length-delimited fields: the payload; other wire types: NULL */
     size_t size;          /* payload size for length-delimited fields */
-    uint64_t varint;      /* varint fields: the value */
+    uint64_t scalar;      /* varint fields: the value; fixed32/fixed64 fields: the raw bits */
 } ubii_wire_field;
 
 typedef struct ubii_wire_scan {

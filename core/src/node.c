@@ -1,0 +1,548 @@
+/* The node's lifecycle: the connection sequence as a state machine driven from poll(). */
+#include <string.h>
+
+#include <pb_decode.h>
+
+#include "node_internal.h"
+#include "ubii/servers/server.pb.h"
+
+enum { STOP_POLL_SLICE_MS = 20 };
+
+bool ubii__copy_string(char *destination, size_t capacity, const char *source)
+{
+    size_t length = strlen(source);
+    if (length >= capacity) {
+        return false;
+    }
+    memcpy(destination, source, length + 1);
+    return true;
+}
+
+uint64_t ubii__now(ubii_node *node)
+{
+    return node->port.vtable->monotonic_ms(node->port.context);
+}
+
+void ubii_config_init(ubii_config *config)
+{
+    if (config == NULL) {
+        return;
+    }
+    memset(config, 0, sizeof *config);
+    config->client_name = "libubii";
+    config->service_timeout_ms = 5000;
+    config->ping_timeout_ms = 5000;
+    config->reconnect_min_ms = 250;
+    config->reconnect_max_ms = 8000;
+    config->stamp_records = true;
+}
+
+const char *ubii_state_name(ubii_state state)
+{
+    switch (state) {
+    case UBII_STATE_STOPPED:
+        return "stopped";
+    case UBII_STATE_CONNECTING:
+        return "connecting";
+    case UBII_STATE_REGISTERING:
+        return "registering";
+    case UBII_STATE_OPENING:
+        return "opening";
+    case UBII_STATE_READY:
+        return "ready";
+    case UBII_STATE_RECONNECTING:
+        return "reconnecting";
+    case UBII_STATE_STOPPING:
+        return "stopping";
+    case UBII_STATE_FAILED:
+        return "failed";
+    }
+    return "unknown";
+}
+
+static bool has_scheme(const char *url)
+{
+    const char *separator = strstr(url, "://");
+    return separator != NULL && separator != url;
+}
+
+ubii_status ubii_node_init(ubii_node *node, size_t node_size, const ubii_config *config,
+                           ubii_port port)
+{
+    if (node == NULL || node_size != sizeof(ubii_node) || config == NULL || port.vtable == NULL ||
+        config->service_url == NULL || !has_scheme(config->service_url) ||
+        (config->topic_url != NULL && !has_scheme(config->topic_url))) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    memset(node, 0, sizeof *node);
+    node->struct_size = node_size;
+    node->port = port;
+    node->config = *config;
+    const char *name = config->client_name != NULL ? config->client_name : "libubii";
+    if (!ubii__copy_string(node->service_url, sizeof node->service_url, config->service_url) ||
+        (config->topic_url != NULL &&
+         !ubii__copy_string(node->topic_url, sizeof node->topic_url, config->topic_url)) ||
+        !ubii__copy_string(node->client_name, sizeof node->client_name, name)) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    node->config.service_url = node->service_url;
+    node->config.topic_url = config->topic_url != NULL ? node->topic_url : NULL;
+    node->config.client_name = node->client_name;
+    if (node->config.service_timeout_ms == 0) {
+        node->config.service_timeout_ms = 5000;
+    }
+    if (node->config.reconnect_min_ms == 0) {
+        node->config.reconnect_min_ms = 1;
+    }
+    if (node->config.reconnect_max_ms < node->config.reconnect_min_ms) {
+        node->config.reconnect_max_ms = node->config.reconnect_min_ms;
+    }
+    node->next_generation = 1;
+    node->state = UBII_STATE_STOPPED;
+    return UBII_OK;
+}
+
+static void announce(ubii_node *node, ubii_state previous, ubii_state current, ubii_status reason)
+{
+    if (node->config.on_state != NULL) {
+        node->config.on_state(node, previous, current, reason, node->config.on_state_user);
+    }
+}
+
+void ubii__set_state(ubii_node *node, ubii_state state, ubii_status reason)
+{
+    ubii_state previous = node->state;
+    if (previous == state) {
+        return;
+    }
+    node->state = state;
+    if (node->in_poll) {
+        announce(node, previous, state, reason);
+        return;
+    }
+    const uint32_t capacity = sizeof node->deferred_states / sizeof node->deferred_states[0];
+    if (node->deferred_state_count < capacity) {
+        node->deferred_states[node->deferred_state_count].previous = previous;
+        node->deferred_states[node->deferred_state_count].current = state;
+        node->deferred_states[node->deferred_state_count].reason = reason;
+        node->deferred_state_count++;
+    }
+}
+
+void ubii__report(ubii_node *node, ubii_status status, const char *detail)
+{
+    if (node->config.on_error != NULL) {
+        node->config.on_error(node, status, detail, node->config.on_error_user);
+    }
+}
+
+static void close_channels(ubii_node *node)
+{
+    node->port.vtable->close(node->port.context, UBII_CHANNEL_TOPIC);
+    node->port.vtable->close(node->port.context, UBII_CHANNEL_SERVICE);
+}
+
+static ubii_status begin_connecting(ubii_node *node)
+{
+    node->client_id[0] = '\0';
+    node->ping_seen = false;
+    ubii_status status =
+        node->port.vtable->open(node->port.context, UBII_CHANNEL_SERVICE, node->service_url, NULL);
+    if (status != UBII_OK) {
+        return status;
+    }
+    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_SERVER_CONFIGURATION);
+    status = ubii__enqueue(node, &request, 0, UBII__CALL_SERVER_CONFIGURATION, NULL, NULL);
+    if (status != UBII_OK) {
+        close_channels(node);
+        return status;
+    }
+    ubii__set_state(node, UBII_STATE_CONNECTING, UBII_OK);
+    return UBII_OK;
+}
+
+ubii_status ubii_node_start(ubii_node *node)
+{
+    if (node == NULL || node->struct_size != sizeof(ubii_node)) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    if (node->state != UBII_STATE_STOPPED && node->state != UBII_STATE_FAILED) {
+        return UBII_ERR_STATE;
+    }
+    node->reconnect_attempts = 0;
+    node->stop_requested = false;
+    return begin_connecting(node);
+}
+
+static uint64_t backoff_ms(const ubii_node *node)
+{
+    uint64_t wait = node->config.reconnect_min_ms;
+    for (uint32_t i = 1; i < node->reconnect_attempts && wait < node->config.reconnect_max_ms;
+         ++i) {
+        wait *= 2;
+    }
+    return wait < node->config.reconnect_max_ms ? wait : node->config.reconnect_max_ms;
+}
+
+static void finish_stop(ubii_node *node)
+{
+    ubii__cancel_calls(node, UBII_ERR_CANCELLED);
+    close_channels(node);
+    ubii__subscriptions_reset_master(node);
+    node->client_id[0] = '\0';
+    node->stop_requested = false;
+    ubii__set_state(node, UBII_STATE_STOPPED, UBII_OK);
+}
+
+void ubii__connection_lost(ubii_node *node, ubii_status reason)
+{
+    if (node->state == UBII_STATE_STOPPING) {
+        finish_stop(node);
+        return;
+    }
+    ubii__cancel_calls(node, UBII_ERR_CANCELLED);
+    close_channels(node);
+    ubii__subscriptions_reset_master(node);
+    node->client_id[0] = '\0';
+    node->reconnect_attempts++;
+    node->stats.reconnects++;
+    if (node->config.max_reconnect_attempts != 0 &&
+        node->reconnect_attempts > node->config.max_reconnect_attempts) {
+        ubii__set_state(node, UBII_STATE_FAILED, reason);
+        return;
+    }
+    node->retry_at_ms = ubii__now(node) + backoff_ms(node);
+    ubii__set_state(node, UBII_STATE_RECONNECTING, reason);
+}
+
+/* "scheme://host:port/..." -> "tcp://host:<port>" for the topic channel. */
+static bool derive_topic_url(ubii_node *node, const char *port)
+{
+    const char *host = strstr(node->service_url, "://") + 3;
+    size_t host_length = strcspn(host, ":/");
+    size_t port_length = strlen(port);
+    if (host_length == 0 || port_length == 0 ||
+        6 + host_length + 1 + port_length + 1 > sizeof node->topic_url) {
+        return false;
+    }
+    memcpy(node->topic_url, "tcp://", 6);
+    memcpy(node->topic_url + 6, host, host_length);
+    node->topic_url[6 + host_length] = ':';
+    memcpy(node->topic_url + 7 + host_length, port, port_length + 1);
+    return true;
+}
+
+static void on_server_configuration(ubii_node *node, const ubii_reply *reply)
+{
+    ubii_servers_Server server = ubii_servers_Server_init_zero;
+    ubii_status status = ubii_reply_decode(reply, ubii_services_ServiceReply_server_tag,
+                                           ubii_servers_Server_fields, &server);
+    if (status != UBII_OK) {
+        ubii__report(node, status, "server configuration failed");
+        ubii__connection_lost(node, status);
+        return;
+    }
+    if (node->config.topic_url == NULL && !derive_topic_url(node, server.port_topic_data_zmq)) {
+        ubii__report(node, UBII_ERR_UNEXPECTED_REPLY, "the master reported no topic data port");
+        ubii__connection_lost(node, UBII_ERR_UNEXPECTED_REPLY);
+        return;
+    }
+    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_CLIENT_REGISTRATION);
+    request.which_type = ubii_services_ServiceRequest_client_tag;
+    ubii__copy_string(request.type.client.name, sizeof request.type.client.name, node->client_name);
+    request.type.client.is_dedicated_processing_node = node->config.is_dedicated_processing_node;
+    status = ubii__enqueue(node, &request, 0, UBII__CALL_REGISTRATION, NULL, NULL);
+    if (status != UBII_OK) {
+        ubii__connection_lost(node, status);
+        return;
+    }
+    ubii__set_state(node, UBII_STATE_REGISTERING, UBII_OK);
+}
+
+static void on_registration(ubii_node *node, const ubii_reply *reply)
+{
+    ubii_clients_Client client = ubii_clients_Client_init_zero;
+    ubii_status status = ubii_reply_decode(reply, ubii_services_ServiceReply_client_tag,
+                                           ubii_clients_Client_fields, &client);
+    if (status == UBII_OK && client.id[0] == '\0') {
+        status = UBII_ERR_UNEXPECTED_REPLY;
+    }
+    if (status != UBII_OK) {
+        ubii__report(node, status,
+                     reply->error_message[0] ? reply->error_message : "registration failed");
+        ubii__connection_lost(node, status);
+        return;
+    }
+    ubii__copy_string(node->client_id, sizeof node->client_id, client.id);
+    status = node->port.vtable->open(node->port.context, UBII_CHANNEL_TOPIC, node->topic_url,
+                                     node->client_id);
+    if (status != UBII_OK) {
+        ubii__report(node, status, "cannot open the topic data connection");
+        ubii__connection_lost(node, status);
+        return;
+    }
+    node->open_deadline_ms = ubii__now(node) + node->config.service_timeout_ms;
+    ubii__set_state(node, UBII_STATE_OPENING, UBII_OK);
+}
+
+void ubii__on_step_reply(ubii_node *node, uint8_t purpose, const ubii_reply *reply)
+{
+    switch (purpose) {
+    case UBII__CALL_SERVER_CONFIGURATION:
+        if (node->state == UBII_STATE_CONNECTING) {
+            on_server_configuration(node, reply);
+        }
+        break;
+    case UBII__CALL_REGISTRATION:
+        if (node->state == UBII_STATE_REGISTERING) {
+            on_registration(node, reply);
+        }
+        break;
+    case UBII__CALL_SUBSCRIPTION:
+        ubii__subscriptions_on_reply(node, reply);
+        break;
+    case UBII__CALL_DEREGISTRATION:
+        if (reply->status != UBII_OK && reply->status != UBII_ERR_CANCELLED) {
+            ubii__report(node, reply->status, "deregistration failed");
+        }
+        if (node->state == UBII_STATE_STOPPING) {
+            finish_stop(node);
+        }
+        break;
+    default:
+        break;
+    }
+}
+
+static void begin_stopping(ubii_node *node)
+{
+    node->stop_requested = false;
+    if (node->state == UBII_STATE_STOPPED || node->state == UBII_STATE_STOPPING) {
+        return;
+    }
+    bool registered = node->state == UBII_STATE_OPENING || node->state == UBII_STATE_READY;
+    if (!registered) {
+        finish_stop(node);
+        return;
+    }
+    ubii__cancel_calls(node, UBII_ERR_CANCELLED);
+    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_CLIENT_DEREGISTRATION);
+    request.which_type = ubii_services_ServiceRequest_client_tag;
+    ubii__copy_string(request.type.client.id, sizeof request.type.client.id, node->client_id);
+    ubii__copy_string(request.type.client.name, sizeof request.type.client.name, node->client_name);
+    if (ubii__enqueue(node, &request, 0, UBII__CALL_DEREGISTRATION, NULL, NULL) != UBII_OK) {
+        finish_stop(node);
+        return;
+    }
+    ubii__set_state(node, UBII_STATE_STOPPING, UBII_OK);
+}
+
+ubii_status ubii_node_stop(ubii_node *node)
+{
+    if (node == NULL || node->struct_size != sizeof(ubii_node)) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    if (node->state != UBII_STATE_STOPPED) {
+        node->stop_requested = true;
+    }
+    return UBII_OK;
+}
+
+static void answer_ping(ubii_node *node, unsigned flags)
+{
+    uint8_t *buffer = NULL;
+    ubii_status status = node->port.vtable->send_begin(node->port.context, UBII_CHANNEL_TOPIC,
+                                                       UBII__KEEPALIVE_SIZE, &buffer);
+    if (status == UBII_OK) {
+        memcpy(buffer, UBII__PONG, UBII__KEEPALIVE_SIZE);
+        status = node->port.vtable->send_commit(node->port.context, UBII_CHANNEL_TOPIC, flags);
+    }
+    if (status != UBII_OK) {
+        ubii__report(node, status, "could not answer the master's PING");
+        return;
+    }
+    node->ping_seen = true;
+    node->last_ping_ms = ubii__now(node);
+    node->stats.pings++;
+}
+
+static void receive_topic_data(ubii_node *node)
+{
+    const uint8_t *data;
+    size_t size;
+    unsigned flags;
+    while (node->state == UBII_STATE_READY &&
+           node->port.vtable->receive(node->port.context, UBII_CHANNEL_TOPIC, &data, &size,
+                                      &flags) == UBII_OK) {
+        if (size == UBII__KEEPALIVE_SIZE && memcmp(data, UBII__PING, UBII__KEEPALIVE_SIZE) == 0) {
+            answer_ping(node, flags);
+        } else {
+            ubii__handle_topic_data(node, data, size);
+        }
+    }
+}
+
+static void check_channels(ubii_node *node, uint64_t now)
+{
+    ubii_state state = node->state;
+    if (state == UBII_STATE_STOPPED || state == UBII_STATE_RECONNECTING ||
+        state == UBII_STATE_FAILED) {
+        return;
+    }
+    void *port = node->port.context;
+    if (node->port.vtable->state(port, UBII_CHANNEL_SERVICE) == UBII_CHANNEL_LOST) {
+        ubii__connection_lost(node, UBII_ERR_TRANSPORT);
+        return;
+    }
+    if (state != UBII_STATE_OPENING && state != UBII_STATE_READY) {
+        return;
+    }
+    ubii_channel_state topic = node->port.vtable->state(port, UBII_CHANNEL_TOPIC);
+    if (topic == UBII_CHANNEL_LOST) {
+        ubii__connection_lost(node, UBII_ERR_TRANSPORT);
+    } else if (state == UBII_STATE_OPENING && topic == UBII_CHANNEL_OPEN) {
+        node->reconnect_attempts = 0;
+        ubii__set_state(node, UBII_STATE_READY, UBII_OK);
+        node->subscriptions_dirty = true;
+    } else if (state == UBII_STATE_OPENING && now >= node->open_deadline_ms) {
+        ubii__report(node, UBII_ERR_TIMEOUT, "the topic data connection did not open");
+        ubii__connection_lost(node, UBII_ERR_TIMEOUT);
+    }
+}
+
+static void step(ubii_node *node)
+{
+    uint64_t now = ubii__now(node);
+    if (node->stop_requested) {
+        begin_stopping(node);
+    }
+    check_channels(node, now);
+    receive_topic_data(node);
+    ubii__service_step(node);
+    now = ubii__now(node);
+    if (node->state == UBII_STATE_READY && node->ping_seen && node->config.ping_timeout_ms != 0 &&
+        now - node->last_ping_ms > node->config.ping_timeout_ms) {
+        ubii__report(node, UBII_ERR_TIMEOUT, "no PING from the master");
+        ubii__connection_lost(node, UBII_ERR_TIMEOUT);
+    }
+    if (node->state == UBII_STATE_RECONNECTING && now >= node->retry_at_ms) {
+        ubii_status status = begin_connecting(node);
+        if (status != UBII_OK) {
+            ubii__connection_lost(node, status);
+        }
+    }
+    if (node->state == UBII_STATE_READY) {
+        ubii__subscriptions_sync(node);
+    }
+}
+
+int ubii_node_next_timeout_ms(ubii_node *node)
+{
+    if (node == NULL) {
+        return -1;
+    }
+    uint64_t now = ubii__now(node);
+    uint64_t deadline = UINT64_MAX;
+    if (node->stop_requested || node->deferred_state_count > 0) {
+        return 0;
+    }
+    if (node->call_sent && node->call_deadline_ms < deadline) {
+        deadline = node->call_deadline_ms;
+    }
+    if (node->state == UBII_STATE_RECONNECTING && node->retry_at_ms < deadline) {
+        deadline = node->retry_at_ms;
+    }
+    if (node->state == UBII_STATE_OPENING && node->open_deadline_ms < deadline) {
+        deadline = node->open_deadline_ms;
+    }
+    if (node->state == UBII_STATE_READY && node->ping_seen && node->config.ping_timeout_ms != 0) {
+        uint64_t ping_deadline = node->last_ping_ms + node->config.ping_timeout_ms + 1;
+        if (ping_deadline < deadline) {
+            deadline = ping_deadline;
+        }
+    }
+    if (deadline == UINT64_MAX) {
+        return -1;
+    }
+    if (deadline <= now) {
+        return 0;
+    }
+    uint64_t wait = deadline - now;
+    return wait > 0x7fffffff ? 0x7fffffff : (int)wait;
+}
+
+ubii_status ubii_node_poll(ubii_node *node, int timeout_ms)
+{
+    if (node == NULL || node->struct_size != sizeof(ubii_node)) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    if (node->in_poll) {
+        return UBII_ERR_STATE;
+    }
+    node->in_poll = true;
+    for (uint32_t i = 0; i < node->deferred_state_count; ++i) {
+        announce(node, node->deferred_states[i].previous, node->deferred_states[i].current,
+                 node->deferred_states[i].reason);
+    }
+    node->deferred_state_count = 0;
+
+    int wait = timeout_ms < 0 ? -1 : timeout_ms;
+    int due = ubii_node_next_timeout_ms(node);
+    if (due >= 0 && (wait < 0 || due < wait)) {
+        wait = due;
+    }
+    ubii_status status = node->port.vtable->wait(node->port.context, wait < 0 ? 0x7fffffff : wait);
+    step(node);
+    node->in_poll = false;
+    return status == UBII_ERR_WOULD_BLOCK || status == UBII_ERR_TIMEOUT ? UBII_OK : status;
+}
+
+ubii_status ubii_node_stop_wait(ubii_node *node, int timeout_ms)
+{
+    ubii_status status = ubii_node_stop(node);
+    if (status != UBII_OK) {
+        return status;
+    }
+    if (node->in_poll) {
+        return UBII_ERR_STATE;
+    }
+    uint64_t deadline = ubii__now(node) + (uint64_t)(timeout_ms > 0 ? timeout_ms : 0);
+    while (node->state != UBII_STATE_STOPPED && ubii__now(node) < deadline) {
+        ubii_node_poll(node, STOP_POLL_SLICE_MS);
+    }
+    if (node->state != UBII_STATE_STOPPED) {
+        node->in_poll = true;
+        finish_stop(node);
+        node->in_poll = false;
+        return UBII_ERR_TIMEOUT;
+    }
+    return UBII_OK;
+}
+
+ubii_state ubii_node_state(const ubii_node *node)
+{
+    return node != NULL ? node->state : UBII_STATE_STOPPED;
+}
+
+const char *ubii_node_client_id(const ubii_node *node)
+{
+    return node != NULL ? node->client_id : "";
+}
+
+void ubii_node_stats(const ubii_node *node, ubii_stats *stats)
+{
+    if (node != NULL && stats != NULL) {
+        *stats = node->stats;
+    }
+}
+
+int ubii_node_pollfds(ubii_node *node, ubii_pollfd *fds, int capacity)
+{
+    if (node == NULL || (fds == NULL && capacity > 0)) {
+        return 0;
+    }
+    return node->port.vtable->pollfds(node->port.context, fds, capacity);
+}

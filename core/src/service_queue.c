@@ -1,0 +1,280 @@
+/* Service calls: encoded into the node's queue when made, sent one at a time (the master's REQ/REP
+ * channel allows one outstanding request), each with its own timeout. */
+#include <string.h>
+
+#include <pb_decode.h>
+#include <pb_encode.h>
+
+#include "node_internal.h"
+#include "wire_scan.h"
+
+static const char empty_text[] = "";
+
+void ubii__parse_reply(const uint8_t *bytes, size_t size, ubii_reply *reply,
+                       ubii_general_Error *error_storage)
+{
+    memset(reply, 0, sizeof *reply);
+    reply->error_title = empty_text;
+    reply->error_message = empty_text;
+
+    ubii_wire_scan scan;
+    ubii_wire_field field;
+    bool malformed = false;
+    bool found = false;
+    ubii_wire_scan_init(&scan, bytes, size);
+    while (ubii_wire_scan_next(&scan, &field, &malformed)) {
+        /* Every ServiceReply member is a message; protobuf lets the last one win. */
+        if (field.wire_type == PB_WT_STRING) {
+            reply->member = field.number;
+            reply->bytes = field.bytes;
+            reply->size = field.size;
+            found = true;
+        }
+    }
+    if (malformed) {
+        reply->status = UBII_ERR_DECODE;
+        return;
+    }
+    if (!found) {
+        reply->status = UBII_ERR_UNEXPECTED_REPLY;
+        return;
+    }
+    if (reply->member == ubii_services_ServiceReply_error_tag) {
+        ubii_general_Error error = ubii_general_Error_init_zero;
+        pb_istream_t stream = pb_istream_from_buffer(reply->bytes, reply->size);
+        if (!pb_decode(&stream, ubii_general_Error_fields, &error)) {
+            reply->status = UBII_ERR_DECODE;
+            return;
+        }
+        *error_storage = error;
+        reply->error_title = error_storage->title;
+        reply->error_message = error_storage->message;
+        reply->status = UBII_ERR_BROKER;
+    }
+}
+
+ubii_status ubii_reply_decode(const ubii_reply *reply, uint32_t expected_member,
+                              const pb_msgdesc_t *fields, void *message)
+{
+    if (reply == NULL || fields == NULL || message == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    if (reply->status != UBII_OK) {
+        return reply->status;
+    }
+    if (reply->member != expected_member) {
+        return UBII_ERR_WRONG_TYPE;
+    }
+    pb_istream_t stream = pb_istream_from_buffer(reply->bytes, reply->size);
+    return pb_decode(&stream, fields, message) ? UBII_OK : UBII_ERR_DECODE;
+}
+
+ubii_status ubii__enqueue(ubii_node *node, const ubii_services_ServiceRequest *request,
+                          uint32_t timeout_ms, uint8_t purpose, ubii__callback fn, void *user)
+{
+    if (node->call_count == UBII_SERVICE_QUEUE_DEPTH) {
+        return UBII_ERR_FULL;
+    }
+    size_t size = 0;
+    if (!pb_get_encoded_size(&size, ubii_services_ServiceRequest_fields, request)) {
+        return UBII_ERR_ENCODE;
+    }
+    if (size > UBII_SERVICE_QUEUE_BYTES) {
+        return UBII_ERR_TOO_LARGE;
+    }
+    if (size > UBII_SERVICE_QUEUE_BYTES - node->queue_used) {
+        return UBII_ERR_FULL;
+    }
+    pb_ostream_t stream = pb_ostream_from_buffer(node->queue_bytes + node->queue_used, size);
+    if (!pb_encode(&stream, ubii_services_ServiceRequest_fields, request)) {
+        return UBII_ERR_ENCODE;
+    }
+    ubii__call *call = &node->calls[node->call_count++];
+    call->offset = node->queue_used;
+    call->size = (uint32_t)size;
+    call->timeout_ms = timeout_ms != 0 ? timeout_ms : node->config.service_timeout_ms;
+    call->fn = fn;
+    call->user = user;
+    call->purpose = purpose;
+    node->queue_used += (uint32_t)size;
+    return UBII_OK;
+}
+
+static ubii__call pop_head(ubii_node *node)
+{
+    ubii__call head = node->calls[0];
+    memmove(node->queue_bytes, node->queue_bytes + head.size, node->queue_used - head.size);
+    node->queue_used -= head.size;
+    for (uint32_t i = 1; i < node->call_count; ++i) {
+        node->calls[i - 1] = node->calls[i];
+        node->calls[i - 1].offset -= head.size;
+    }
+    node->call_count--;
+    node->call_sent = false;
+    return head;
+}
+
+static void deliver(ubii_node *node, const ubii__call *call, const ubii_reply *reply)
+{
+    if (call->purpose != UBII__CALL_APPLICATION) {
+        ubii__on_step_reply(node, call->purpose, reply);
+    } else if (call->fn != NULL) {
+        ((ubii_reply_fn)call->fn)(node, reply, call->user);
+    }
+}
+
+/* A REQ socket whose request went unanswered cannot send again: start the channel afresh. */
+static void reset_service_channel(ubii_node *node)
+{
+    node->port.vtable->close(node->port.context, UBII_CHANNEL_SERVICE);
+    node->port.vtable->open(node->port.context, UBII_CHANNEL_SERVICE, node->service_url, NULL);
+}
+
+void ubii__cancel_calls(ubii_node *node, ubii_status status)
+{
+    if (node->call_count == 0) {
+        return;
+    }
+    if (node->call_sent) {
+        reset_service_channel(node);
+    }
+    ubii__call cancelled[UBII_SERVICE_QUEUE_DEPTH];
+    uint32_t count = node->call_count;
+    memcpy(cancelled, node->calls, count * sizeof cancelled[0]);
+    node->call_count = 0;
+    node->queue_used = 0;
+    node->call_sent = false;
+    node->subscription_call_pending = false;
+
+    ubii_reply reply;
+    memset(&reply, 0, sizeof reply);
+    reply.status = status;
+    reply.error_title = empty_text;
+    reply.error_message = empty_text;
+    for (uint32_t i = 0; i < count; ++i) {
+        if (cancelled[i].purpose == UBII__CALL_APPLICATION && cancelled[i].fn != NULL) {
+            ((ubii_reply_fn)cancelled[i].fn)(node, &reply, cancelled[i].user);
+        }
+    }
+}
+
+static bool send_head(ubii_node *node)
+{
+    const ubii__call *head = &node->calls[0];
+    uint8_t *buffer = NULL;
+    ubii_status status = node->port.vtable->send_begin(node->port.context, UBII_CHANNEL_SERVICE,
+                                                       head->size, &buffer);
+    if (status == UBII_OK) {
+        memcpy(buffer, node->queue_bytes + head->offset, head->size);
+        status = node->port.vtable->send_commit(node->port.context, UBII_CHANNEL_SERVICE, 0);
+    }
+    if (status == UBII_ERR_WOULD_BLOCK) {
+        return false;
+    }
+    node->call_sent = true;
+    node->call_deadline_ms = ubii__now(node) + head->timeout_ms;
+    if (status != UBII_OK) {
+        node->call_deadline_ms = ubii__now(node); /* fails as a timeout at once */
+    }
+    return true;
+}
+
+void ubii__service_step(ubii_node *node)
+{
+    void *port = node->port.context;
+    while (node->call_count > 0) {
+        ubii_channel_state channel = node->port.vtable->state(port, UBII_CHANNEL_SERVICE);
+        if (channel == UBII_CHANNEL_CLOSED || channel == UBII_CHANNEL_LOST) {
+            return;
+        }
+        if (!node->call_sent && !send_head(node)) {
+            return;
+        }
+        const uint8_t *data;
+        size_t size;
+        unsigned flags;
+        ubii_reply reply;
+        ubii_general_Error error_storage;
+        if (node->port.vtable->receive(port, UBII_CHANNEL_SERVICE, &data, &size, &flags) ==
+            UBII_OK) {
+            ubii__parse_reply(data, size, &reply, &error_storage);
+            if (reply.status == UBII_ERR_DECODE) {
+                node->stats.decode_errors++;
+            }
+            ubii__call call = pop_head(node);
+            deliver(node, &call, &reply);
+            continue;
+        }
+        if (ubii__now(node) < node->call_deadline_ms) {
+            return;
+        }
+        node->stats.service_timeouts++;
+        ubii__call call = pop_head(node);
+        reset_service_channel(node);
+        memset(&reply, 0, sizeof reply);
+        reply.status = UBII_ERR_TIMEOUT;
+        reply.error_title = empty_text;
+        reply.error_message = empty_text;
+        deliver(node, &call, &reply);
+    }
+}
+
+/* ---- the application's calls ----------------------------------------------------------------- */
+
+ubii_status ubii_call(ubii_node *node, const ubii_services_ServiceRequest *request,
+                      uint32_t timeout_ms, ubii_reply_fn fn, void *user)
+{
+    if (node == NULL || request == NULL || request->topic[0] == '\0') {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    if (node->state != UBII_STATE_READY) {
+        return UBII_ERR_NOT_CONNECTED;
+    }
+    return ubii__enqueue(node, request, timeout_ms, UBII__CALL_APPLICATION, (ubii__callback)fn,
+                         user);
+}
+
+ubii_status ubii_call_topic(ubii_node *node, const char *topic, uint32_t timeout_ms,
+                            ubii_reply_fn fn, void *user)
+{
+    if (topic == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    if (!ubii__copy_string(request.topic, sizeof request.topic, topic)) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    return ubii_call(node, &request, timeout_ms, fn, user);
+}
+
+ubii_status ubii_register_device(ubii_node *node, const ubii_devices_Device *device,
+                                 uint32_t timeout_ms, ubii_reply_fn fn, void *user)
+{
+    if (node == NULL || device == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_DEVICE_REGISTRATION);
+    request.which_type = ubii_services_ServiceRequest_device_tag;
+    request.type.device = *device;
+    ubii__copy_string(request.type.device.client_id, sizeof request.type.device.client_id,
+                      node->client_id);
+    return ubii_call(node, &request, timeout_ms, fn, user);
+}
+
+ubii_status ubii_deregister_device(ubii_node *node, const char *device_id, uint32_t timeout_ms,
+                                   ubii_reply_fn fn, void *user)
+{
+    if (node == NULL || device_id == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_DEVICE_DEREGISTRATION);
+    request.which_type = ubii_services_ServiceRequest_device_tag;
+    if (!ubii__copy_string(request.type.device.id, sizeof request.type.device.id, device_id)) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    ubii__copy_string(request.type.device.client_id, sizeof request.type.device.client_id,
+                      node->client_id);
+    return ubii_call(node, &request, timeout_ms, fn, user);
+}

@@ -1,0 +1,48 @@
+#ifndef UBII_PORT_LINUX_H
+#define UBII_PORT_LINUX_H
+
+/* The Linux port: ZeroMQ (tcp://) for services and topic data, libwebsockets for WebSocket topic
+ * data (ws://, wss://) and binary HTTP services (http://, https://). Unlike the core, this port
+ * allocates (libzmq and libwebsockets do); it starts no thread of its own besides libzmq's I/O
+ * thread.
+ *
+ *     ubii_linux_port *linux_port;
+ *     ubii_linux_port_create(&linux_port, NULL);
+ *     ubii_node_init(&node, sizeof node, &config, ubii_linux_port_get(linux_port));
+ *     ...
+ *     ubii_linux_port_destroy(linux_port);   // after the node is stopped
+ */
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "ubii/export.h"
+#include "ubii/port.h"
+#include "ubii/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct ubii_linux_port ubii_linux_port;
+
+typedef struct ubii_linux_port_options {
+    /* Largest message accepted from the master; a larger one drops the connection. 0: 16 MiB. */
+    size_t max_message_size;
+    /* TLS (wss://, https://): accept self-signed certificates, e.g. a master's own. */
+    bool allow_self_signed;
+} ubii_linux_port_options;
+
+/* Creates a port; `options` may be NULL for the defaults. UBII_ERR_TRANSPORT if libzmq fails. */
+UBII_API ubii_status ubii_linux_port_create(ubii_linux_port **port,
+                                            const ubii_linux_port_options *options);
+/* The port as a node runs on it; valid until ubii_linux_port_destroy. */
+UBII_API ubii_port ubii_linux_port_get(ubii_linux_port *port);
+/* Closes everything. The node using the port must not be polled afterwards. */
+UBII_API void ubii_linux_port_destroy(ubii_linux_port *port);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,206 @@
+#define _POSIX_C_SOURCE 200809L /* clock_gettime in strict C99 */
+/* The Linux port's vtable: picks the transport by URL scheme and drives the I/O. */
+#include <poll.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "linux_port.h"
+
+enum { DEFAULT_MAX_MESSAGE_SIZE = 16 * 1024 * 1024 };
+
+static bool starts_with(const char *text, const char *prefix)
+{
+    return strncmp(text, prefix, strlen(prefix)) == 0;
+}
+
+static void close_channel(void *context, ubii_channel which)
+{
+    ubii_linux_port *port = context;
+    if ((unsigned)which >= UBII_CHANNEL_COUNT) {
+        return;
+    }
+    channel *ch = &port->channels[which];
+    if (ch->kind == TRANSPORT_ZMQ) {
+        ubii__zmq_close(ch);
+    }
+    ch->kind = TRANSPORT_NONE;
+    ch->state = UBII_CHANNEL_CLOSED;
+}
+
+static ubii_status open_channel(void *context, ubii_channel which, const char *url,
+                                const char *client_id)
+{
+    ubii_linux_port *port = context;
+    if ((unsigned)which >= UBII_CHANNEL_COUNT || url == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    close_channel(port, which);
+    channel *ch = &port->channels[which];
+    if (starts_with(url, "tcp://")) {
+        ubii_status status = ubii__zmq_open(port, which, url, client_id);
+        if (status == UBII_OK) {
+            ch->kind = TRANSPORT_ZMQ;
+        }
+        return status;
+    }
+    return UBII_ERR_UNSUPPORTED;
+}
+
+static ubii_channel_state channel_state(void *context, ubii_channel which)
+{
+    ubii_linux_port *port = context;
+    if ((unsigned)which >= UBII_CHANNEL_COUNT) {
+        return UBII_CHANNEL_CLOSED;
+    }
+    channel *ch = &port->channels[which];
+    if (ch->kind == TRANSPORT_ZMQ) {
+        ubii__zmq_update_state(ch);
+    }
+    return ch->state;
+}
+
+static bool can_send(const channel *ch)
+{
+    return ch->state == UBII_CHANNEL_OPEN || ch->state == UBII_CHANNEL_CONNECTING;
+}
+
+static ubii_status send_begin(void *context, ubii_channel which, size_t size, uint8_t **buffer)
+{
+    ubii_linux_port *port = context;
+    if ((unsigned)which >= UBII_CHANNEL_COUNT || buffer == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    channel *ch = &port->channels[which];
+    if (!can_send(ch)) {
+        return UBII_ERR_NOT_CONNECTED;
+    }
+    return ubii__zmq_send_begin(port, ch, size, buffer);
+}
+
+static ubii_status send_commit(void *context, ubii_channel which, unsigned flags)
+{
+    ubii_linux_port *port = context;
+    (void)flags; /* ZMQ frames have no text/binary distinction */
+    if ((unsigned)which >= UBII_CHANNEL_COUNT) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    channel *ch = &port->channels[which];
+    if (!can_send(ch)) {
+        return UBII_ERR_NOT_CONNECTED;
+    }
+    return ubii__zmq_send_commit(ch);
+}
+
+static ubii_status receive(void *context, ubii_channel which, const uint8_t **data, size_t *size,
+                           unsigned *flags)
+{
+    ubii_linux_port *port = context;
+    if ((unsigned)which >= UBII_CHANNEL_COUNT || data == NULL || size == NULL || flags == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    channel *ch = &port->channels[which];
+    *flags = 0;
+    if (ch->kind != TRANSPORT_ZMQ) {
+        return UBII_ERR_WOULD_BLOCK;
+    }
+    return ubii__zmq_receive(port, which, data, size);
+}
+
+static ubii_status wait_for_io(void *context, int timeout_ms)
+{
+    ubii_linux_port *port = context;
+    zmq_pollitem_t items[2 * UBII_CHANNEL_COUNT];
+    int count = 0;
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        if (port->channels[i].kind == TRANSPORT_ZMQ) {
+            count += ubii__zmq_poll_items(&port->channels[i], items + count);
+        }
+    }
+    if (count == 0) {
+        if (timeout_ms > 0) {
+            poll(NULL, 0, timeout_ms);
+        }
+        return UBII_OK;
+    }
+    if (zmq_poll(items, count, timeout_ms) < 0 && zmq_errno() != EINTR) {
+        return UBII_ERR_TRANSPORT;
+    }
+    return UBII_OK;
+}
+
+static int poll_fds(void *context, ubii_pollfd *fds, int capacity)
+{
+    ubii_linux_port *port = context;
+    int count = 0;
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        if (port->channels[i].kind == TRANSPORT_ZMQ) {
+            int room = capacity > count ? capacity - count : 0;
+            count += ubii__zmq_fds(&port->channels[i], fds != NULL ? fds + count : NULL, room);
+        }
+    }
+    return count;
+}
+
+static uint64_t monotonic_ms(void *context)
+{
+    (void)context;
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (uint64_t)now.tv_sec * 1000u + (uint64_t)now.tv_nsec / 1000000u;
+}
+
+static int64_t epoch_ms(void *context)
+{
+    (void)context;
+    struct timespec now;
+    clock_gettime(CLOCK_REALTIME, &now);
+    return (int64_t)now.tv_sec * 1000 + now.tv_nsec / 1000000;
+}
+
+static const ubii_port_vtable linux_vtable = {
+    open_channel, close_channel, channel_state, send_begin,   send_commit,
+    receive,      wait_for_io,   poll_fds,      monotonic_ms, epoch_ms,
+};
+
+ubii_status ubii_linux_port_create(ubii_linux_port **result, const ubii_linux_port_options *options)
+{
+    if (result == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    ubii_linux_port *port = calloc(1, sizeof *port);
+    if (port == NULL) {
+        return UBII_ERR_TRANSPORT;
+    }
+    if (options != NULL) {
+        port->options = *options;
+    }
+    if (port->options.max_message_size == 0) {
+        port->options.max_message_size = DEFAULT_MAX_MESSAGE_SIZE;
+    }
+    port->zmq_context = zmq_ctx_new();
+    if (port->zmq_context == NULL) {
+        free(port);
+        return UBII_ERR_TRANSPORT;
+    }
+    *result = port;
+    return UBII_OK;
+}
+
+ubii_port ubii_linux_port_get(ubii_linux_port *port)
+{
+    ubii_port handle = {&linux_vtable, port};
+    return handle;
+}
+
+void ubii_linux_port_destroy(ubii_linux_port *port)
+{
+    if (port == NULL) {
+        return;
+    }
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        close_channel(port, (ubii_channel)i);
+    }
+    zmq_ctx_term(port->zmq_context);
+    free(port);
+}
