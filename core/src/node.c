@@ -446,8 +446,12 @@ int ubii_node_next_timeout_ms(ubii_node *node)
     }
     uint64_t now = ubii__now(node);
     uint64_t deadline = UINT64_MAX;
-    if (node->stop_requested || node->deferred_state_count > 0) {
-        return 0;
+    bool unsent_call = node->call_count > 0 && !node->call_sent;
+    bool unsent_subscriptions = node->state == UBII_STATE_READY && node->subscriptions_dirty &&
+                                !node->subscription_call_pending;
+    if (node->stop_requested || node->deferred_state_count > 0 || unsent_call ||
+        unsent_subscriptions) {
+        return 0; /* work is waiting: do not sleep before it is sent */
     }
     if (node->call_sent && node->call_deadline_ms < deadline) {
         deadline = node->call_deadline_ms;

@@ -1,0 +1,406 @@
+// The node's protocol logic against a scripted in-process master (FakePort) with simulated time:
+// sequence, keepalive, subscriptions, duplicates, bad input, timeouts, reconnection, stop.
+#include <cstring>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "fake_port.h"
+#include "pb_test_callbacks.h"
+#include "ubii/ubii.h"
+
+using namespace ubii_test;
+
+namespace
+{
+
+const std::string client_id = "11111111-2222-4333-8444-555555555555";
+
+class NodeWithFakeMaster : public ::testing::Test
+{
+  protected:
+    void SetUp() override
+    {
+        fake.answer = [this](const ubii_services_ServiceRequest &request)
+            -> std::optional<std::vector<uint8_t>> {
+            std::string topic = request.topic;
+            if (topic == UBII_SERVICE_SERVER_CONFIGURATION) {
+                return server_reply();
+            }
+            if (topic == UBII_SERVICE_CLIENT_REGISTRATION) {
+                return registration_fails ? error_reply("ClientRegistrationService", "no")
+                                          : client_reply(client_id);
+            }
+            if (topic == UBII_SERVICE_TOPIC_SUBSCRIPTION ||
+                topic == UBII_SERVICE_CLIENT_DEREGISTRATION) {
+                return success_reply();
+            }
+            if (topic == "/services/slow") {
+                return std::nullopt;
+            }
+            return error_reply("Service request error", "unknown topic: " + topic);
+        };
+        ubii_config_init(&config);
+        config.service_url = "tcp://fake:8101";
+        config.client_name = "fake-test";
+        config.service_timeout_ms = 1000;
+        config.ping_timeout_ms = 3000;
+        config.reconnect_min_ms = 100;
+        config.reconnect_max_ms = 400;
+        config.on_state = [](ubii_node *, ubii_state, ubii_state current, ubii_status reason,
+                             void *user) {
+            auto *self = static_cast<NodeWithFakeMaster *>(user);
+            self->states.push_back(current);
+            self->reasons.push_back(reason);
+        };
+        config.on_state_user = this;
+        config.on_error = [](ubii_node *, ubii_status status, const char *detail, void *user) {
+            static_cast<NodeWithFakeMaster *>(user)->errors.emplace_back(status, detail);
+        };
+        config.on_error_user = this;
+    }
+
+    void init()
+    {
+        ASSERT_EQ(ubii_node_init(&node, sizeof node, &config, fake.port()), UBII_OK);
+    }
+
+    void start_ready()
+    {
+        init();
+        ASSERT_EQ(ubii_node_start(&node), UBII_OK);
+        poll(5);
+        ASSERT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+    }
+
+    void poll(int times, int timeout_ms = 0)
+    {
+        for (int i = 0; i < times; ++i) {
+            ubii_node_poll(&node, timeout_ms);
+        }
+    }
+
+    // Advances simulated time by polling with a timeout.
+    void advance(int milliseconds)
+    {
+        uint64_t until = fake.now + static_cast<uint64_t>(milliseconds);
+        while (fake.now < until) {
+            ubii_node_poll(&node, static_cast<int>(until - fake.now));
+        }
+    }
+
+    FakePort fake;
+    ubii_config config;
+    ubii_node node;
+    bool registration_fails = false;
+    std::vector<ubii_state> states;
+    std::vector<ubii_status> reasons;
+    std::vector<std::pair<ubii_status, std::string>> errors;
+};
+
+struct Counter {
+    int count = 0;
+    double last = 0;
+    static void on_record(ubii_node *, const ubii_record *record, void *user)
+    {
+        auto *self = static_cast<Counter *>(user);
+        self->count++;
+        ubii_record_double(record, &self->last);
+    }
+};
+
+TEST_F(NodeWithFakeMaster, ConnectsInProtocolOrderAndOpensTopicsWithTheClientId)
+{
+    start_ready();
+    ASSERT_GE(fake.requests.size(), 2u);
+    EXPECT_STREQ(fake.requests[0].topic, UBII_SERVICE_SERVER_CONFIGURATION);
+    EXPECT_STREQ(fake.requests[1].topic, UBII_SERVICE_CLIENT_REGISTRATION);
+    ASSERT_EQ(fake.requests[1].which_type, ubii_services_ServiceRequest_client_tag);
+    EXPECT_STREQ(fake.requests[1].type.client.name, "fake-test");
+    EXPECT_EQ(fake.topic_client_id, client_id);
+    EXPECT_STREQ(ubii_node_client_id(&node), client_id.c_str());
+    std::vector<ubii_state> expected = {UBII_STATE_CONNECTING, UBII_STATE_REGISTERING,
+                                        UBII_STATE_OPENING, UBII_STATE_READY};
+    EXPECT_EQ(states, expected);
+}
+
+TEST_F(NodeWithFakeMaster, StateChangesFromStartAreAnnouncedOnlyInsidePoll)
+{
+    init();
+    ASSERT_EQ(ubii_node_start(&node), UBII_OK);
+    EXPECT_TRUE(states.empty());
+    ubii_node_poll(&node, 0);
+    ASSERT_FALSE(states.empty());
+    EXPECT_EQ(states.front(), UBII_STATE_CONNECTING);
+}
+
+TEST_F(NodeWithFakeMaster, AnswersEveryPingWithAPongOfTheSameFrameKind)
+{
+    start_ready();
+    fake.push_topic({'P', 'I', 'N', 'G'}, UBII_MESSAGE_TEXT);
+    fake.push_topic({'P', 'I', 'N', 'G'}, 0);
+    poll(1);
+    ASSERT_EQ(fake.topic_sent.size(), 2u);
+    EXPECT_EQ(fake.topic_sent[0].bytes, (std::vector<uint8_t>{'P', 'O', 'N', 'G'}));
+    EXPECT_EQ(fake.topic_sent[0].flags, UBII_MESSAGE_TEXT);
+    EXPECT_EQ(fake.topic_sent[1].flags, 0u);
+    ubii_stats stats;
+    ubii_node_stats(&node, &stats);
+    EXPECT_EQ(stats.pings, 2u);
+}
+
+TEST_F(NodeWithFakeMaster, AsksTheMasterOncePerPatternAndAgainAfterReconnecting)
+{
+    start_ready();
+    Counter a, b, c;
+    ubii_subscription first = 0;
+    ASSERT_EQ(ubii_subscribe(&node, "/t", Counter::on_record, &a, &first), UBII_OK);
+    ASSERT_EQ(ubii_subscribe(&node, "/t", Counter::on_record, &b, nullptr), UBII_OK);
+    ASSERT_EQ(ubii_subscribe_regex(&node, "^/r/.*", Counter::on_record, &c, nullptr), UBII_OK);
+    poll(3);
+    EXPECT_EQ(fake.subscribe_topics, std::vector<std::string>{"/t"});
+    EXPECT_EQ(fake.subscribe_regexes, std::vector<std::string>{"^/r/.*"});
+
+    ASSERT_EQ(ubii_unsubscribe(&node, first), UBII_OK);
+    poll(3);
+    EXPECT_TRUE(fake.unsubscribe_topics.empty()); // "/t" still has a subscriber
+
+    fake.set_state(UBII_CHANNEL_TOPIC, UBII_CHANNEL_LOST);
+    poll(1);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);
+    advance(150);
+    poll(5);
+    ASSERT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+    EXPECT_EQ(fake.subscribe_topics, (std::vector<std::string>{"/t", "/t"}));
+    EXPECT_EQ(fake.subscribe_regexes, (std::vector<std::string>{"^/r/.*", "^/r/.*"}));
+}
+
+TEST_F(NodeWithFakeMaster, CopiesForOverlappingSubscriptionsAreDeliveredOnce)
+{
+    start_ready();
+    Counter exact, regex;
+    ASSERT_EQ(ubii_subscribe(&node, "/a", Counter::on_record, &exact, nullptr), UBII_OK);
+    ASSERT_EQ(ubii_subscribe_regex(&node, "^/a$", Counter::on_record, &regex, nullptr), UBII_OK);
+    poll(3);
+    // The current master sends a record once per matching subscription, back to back.
+    auto record = double_record("/a", 1.0);
+    fake.push_topic(record);
+    fake.push_topic(record);
+    poll(1);
+    EXPECT_EQ(exact.count, 1);
+    EXPECT_EQ(regex.count, 1);
+    // A second, identical publication is a new record.
+    fake.push_topic(record);
+    fake.push_topic(record);
+    poll(1);
+    EXPECT_EQ(exact.count, 2);
+    EXPECT_EQ(regex.count, 2);
+    ubii_stats stats;
+    ubii_node_stats(&node, &stats);
+    EXPECT_EQ(stats.duplicates_dropped, 2u);
+}
+
+TEST_F(NodeWithFakeMaster, IdenticalRecordsOnASingleSubscriptionAreAllDelivered)
+{
+    start_ready();
+    Counter counter;
+    ASSERT_EQ(ubii_subscribe(&node, "/a", Counter::on_record, &counter, nullptr), UBII_OK);
+    poll(3);
+    for (int i = 0; i < 3; ++i) {
+        fake.push_topic(double_record("/a", 7.0));
+    }
+    poll(1);
+    EXPECT_EQ(counter.count, 3);
+    EXPECT_EQ(counter.last, 7.0);
+}
+
+TEST_F(NodeWithFakeMaster, MalformedTopicDataIsCountedAndReportedNeverFatal)
+{
+    start_ready();
+    Counter counter;
+    ASSERT_EQ(ubii_subscribe_regex(&node, ".*", Counter::on_record, &counter, nullptr), UBII_OK);
+    poll(3);
+    fake.push_topic({0x12, 0x05, 0x0a}); // a record whose length runs past the end
+    poll(1);
+    ubii_stats stats;
+    ubii_node_stats(&node, &stats);
+    EXPECT_EQ(stats.decode_errors, 1u);
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(errors.back().first, UBII_ERR_DECODE);
+
+    std::mt19937 random(42);
+    for (int i = 0; i < 2000; ++i) {
+        std::vector<uint8_t> garbage(random() % 64);
+        for (auto &byte : garbage) {
+            byte = static_cast<uint8_t>(random());
+        }
+        fake.push_topic(garbage);
+    }
+    poll(1);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+    fake.push_topic(double_record("/after", 3.0));
+    poll(1);
+    EXPECT_EQ(counter.last, 3.0);
+}
+
+TEST_F(NodeWithFakeMaster, TopicsOverTheSizeLimitAreRefused)
+{
+    start_ready();
+    Counter counter;
+    ASSERT_EQ(ubii_subscribe_regex(&node, ".*", Counter::on_record, &counter, nullptr), UBII_OK);
+    poll(3);
+    // Written by hand: our own encoder refuses such a topic.
+    std::vector<uint8_t> bytes = {0x12};
+    std::string topic(300, 't');
+    std::vector<uint8_t> record = {0x0a, 0xac, 0x02};
+    record.insert(record.end(), topic.begin(), topic.end());
+    bytes.push_back(static_cast<uint8_t>(record.size() | 0x80));
+    bytes.push_back(static_cast<uint8_t>(record.size() >> 7));
+    bytes.insert(bytes.end(), record.begin(), record.end());
+    fake.push_topic(bytes);
+    poll(1);
+    EXPECT_EQ(counter.count, 0);
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(errors.back().first, UBII_ERR_TOO_LARGE);
+}
+
+TEST_F(NodeWithFakeMaster, TopicDataErrorsFromTheMasterAreReported)
+{
+    start_ready();
+    fake.push_topic(topic_data_error("TopicData reception failed (Client ID x)"));
+    poll(1);
+    ubii_stats stats;
+    ubii_node_stats(&node, &stats);
+    EXPECT_EQ(stats.master_errors, 1u);
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(errors.back().first, UBII_ERR_BROKER);
+    EXPECT_EQ(errors.back().second, "TopicData reception failed (Client ID x)");
+}
+
+struct Reply {
+    bool done = false;
+    ubii_status status = UBII_OK;
+    std::string message;
+    static void on_reply(ubii_node *, const ubii_reply *reply, void *user)
+    {
+        auto *self = static_cast<Reply *>(user);
+        self->done = true;
+        self->status = reply->status;
+        self->message = reply->error_message;
+    }
+};
+
+TEST_F(NodeWithFakeMaster, AnUnansweredCallTimesOutAndTheChannelStartsAfresh)
+{
+    start_ready();
+    int service_opens = fake.opens[UBII_CHANNEL_SERVICE];
+    Reply slow, next;
+    ASSERT_EQ(ubii_call_topic(&node, "/services/slow", 500, Reply::on_reply, &slow), UBII_OK);
+    ASSERT_EQ(ubii_call_topic(&node, "/services/other", 0, Reply::on_reply, &next), UBII_OK);
+    advance(400);
+    EXPECT_FALSE(slow.done);
+    advance(200);
+    ASSERT_TRUE(slow.done);
+    EXPECT_EQ(slow.status, UBII_ERR_TIMEOUT);
+    EXPECT_EQ(fake.opens[UBII_CHANNEL_SERVICE], service_opens + 1);
+    poll(2);
+    ASSERT_TRUE(next.done);
+    EXPECT_EQ(next.status, UBII_ERR_BROKER);
+    EXPECT_EQ(next.message, "unknown topic: /services/other");
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+}
+
+TEST_F(NodeWithFakeMaster, ARefusedRegistrationIsRetriedWithGrowingBackoff)
+{
+    registration_fails = true;
+    init();
+    ASSERT_EQ(ubii_node_start(&node), UBII_OK);
+    poll(3);
+    ASSERT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);
+    EXPECT_EQ(reasons.back(), UBII_ERR_BROKER);
+    advance(99);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING); // first wait: 100 ms (t = 1100)
+    advance(1);
+    poll(3);
+    ASSERT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING); // failed again at t = 1100
+    advance(199);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING); // second wait: 200 ms
+    registration_fails = false;
+    advance(1);
+    poll(5);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+}
+
+TEST_F(NodeWithFakeMaster, SilenceAfterTheFirstPingMeansTheMasterIsLost)
+{
+    start_ready();
+    advance(5000); // no PING yet: the watchdog is not armed (the npm 0.4.0 master never pings)
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+    fake.push_topic({'P', 'I', 'N', 'G'});
+    poll(1);
+    advance(2900);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+    advance(200);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);
+    EXPECT_EQ(reasons.back(), UBII_ERR_TIMEOUT);
+}
+
+TEST_F(NodeWithFakeMaster, ATopicConnectionThatNeverOpensTimesOut)
+{
+    fake.topic_opens = false;
+    init();
+    ASSERT_EQ(ubii_node_start(&node), UBII_OK);
+    poll(3);
+    ASSERT_EQ(ubii_node_state(&node), UBII_STATE_OPENING);
+    advance(999);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_OPENING);
+    advance(2);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);
+    EXPECT_EQ(reasons.back(), UBII_ERR_TIMEOUT);
+}
+
+TEST_F(NodeWithFakeMaster, StopCancelsPendingCallsDeregistersAndCloses)
+{
+    start_ready();
+    Reply pending;
+    ASSERT_EQ(ubii_call_topic(&node, "/services/slow", 0, Reply::on_reply, &pending), UBII_OK);
+    poll(1);
+    ASSERT_EQ(ubii_node_stop(&node), UBII_OK);
+    EXPECT_FALSE(pending.done); // nothing runs outside poll
+    poll(3);
+    EXPECT_TRUE(pending.done);
+    EXPECT_EQ(pending.status, UBII_ERR_CANCELLED);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_STOPPED);
+    const auto &last = fake.requests.back();
+    EXPECT_STREQ(last.topic, UBII_SERVICE_CLIENT_DEREGISTRATION);
+    EXPECT_STREQ(last.type.client.id, client_id.c_str());
+    EXPECT_EQ(fake.state(UBII_CHANNEL_TOPIC), UBII_CHANNEL_CLOSED);
+    EXPECT_EQ(fake.state(UBII_CHANNEL_SERVICE), UBII_CHANNEL_CLOSED);
+}
+
+TEST_F(NodeWithFakeMaster, CallbacksCannotPollReentrantly)
+{
+    start_ready();
+    static ubii_status nested = UBII_OK;
+    auto record_fn = [](ubii_node *n, const ubii_record *, void *) {
+        nested = ubii_node_poll(n, 0);
+    };
+    ASSERT_EQ(ubii_subscribe(&node, "/a", record_fn, nullptr, nullptr), UBII_OK);
+    poll(3);
+    fake.push_topic(double_record("/a", 1.0));
+    poll(1);
+    EXPECT_EQ(nested, UBII_ERR_STATE);
+}
+
+TEST_F(NodeWithFakeMaster, PublishedRecordsCarryTopicTimestampAndValue)
+{
+    start_ready();
+    ASSERT_EQ(ubii_publish_double(&node, "/out", 1.0), UBII_OK);
+    ASSERT_EQ(fake.topic_sent.size(), 1u);
+    // TopicData{record{topic "/out", timestamp{millis 1700000000000}, double 1.0}}, as Python's
+    // protobuf encodes it.
+    EXPECT_EQ(to_hex(fake.topic_sent[0].bytes.data(), fake.topic_sent[0].bytes.size()),
+              "12180a042f6f757412071880d095ffbc3119000000000000f03f");
+}
+
+} // namespace
