@@ -6,6 +6,8 @@
 #  - every exported symbol starts with ubii_.
 # Usage: check_core_objects.sh OBJECT...
 set -euo pipefail
+# Symbols sanitizer instrumentation adds (UBII_SANITIZE builds) are not the code's own.
+instrumentation='^(__odr_asan|__asan|___asan|__ubsan|__sancov)'
 [ $# -gt 0 ] || { echo "usage: check_core_objects.sh OBJECT..." >&2; exit 2; }
 failures=0
 
@@ -20,13 +22,14 @@ fi
 # Constant tables holding pointers sit in .data.rel.ro (read-only once relocated): not mutable.
 mutable=$(objdump -t "$@" 2>/dev/null |
   awk '$0 ~ / O / { section = $(NF - 2); if (section ~ /^\.(data|bss)/ && section !~ /^\.data\.rel\.ro/) print $NF }' |
-  sort -u || true)
+  grep -Ev "$instrumentation" | sort -u || true)
 if [ -n "$mutable" ]; then
   echo "check_core_objects: writable global or static data:" $mutable
   failures=1
 fi
 
-foreign=$(nm -g --defined-only "$@" 2>/dev/null | awk 'NF == 3 {print $3}' | grep -v '^ubii_' | sort -u || true)
+foreign=$(nm -g --defined-only "$@" 2>/dev/null | awk 'NF == 3 {print $3}' | grep -v '^ubii_' |
+  grep -Ev "$instrumentation" | sort -u || true)
 if [ -n "$foreign" ]; then
   echo "check_core_objects: exported symbols without the ubii_ prefix:" $foreign
   failures=1

@@ -53,3 +53,23 @@ TEST(NodePubSub, DoubleRoundTripsThroughTheMaster)
 }
 
 } // namespace
+
+namespace
+{
+
+TEST(NodeWebSocket, DoubleRoundTripsOverWebSocketTopicData)
+{
+    TestNode node("websocket-test", ubii_test::topic_ws_url());
+    ASSERT_TRUE(node.wait_ready()) << ubii_state_name(ubii_node_state(node.get()));
+    const std::string topic = unique_topic("/ws-double");
+    node.collect(topic);
+    ASSERT_TRUE(node.poll_until([&] {
+        ubii_publish_double(node.get(), topic.c_str(), -7.25);
+        return !node.received().empty();
+    }));
+    double value;
+    std::memcpy(&value, &node.received().front().scalar, sizeof value);
+    EXPECT_EQ(value, -7.25);
+}
+
+} // namespace

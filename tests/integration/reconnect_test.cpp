@@ -11,7 +11,8 @@
 using ubii_test::TestNode;
 using ubii_test::unique_topic;
 
-namespace {
+namespace
+{
 
 const int own_port_base = 8201;
 
@@ -27,8 +28,9 @@ bool master(const std::string &action, bool background = false)
 
 bool master_stopped()
 {
-    return std::system((std::string("test ! -e ") + UBII_RECONNECT_MASTER_STATE + "/master.pid")
-                           .c_str()) == 0;
+    return std::system(
+               (std::string("test ! -e ") + UBII_RECONNECT_MASTER_STATE + "/master.pid").c_str()) ==
+           0;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start)
@@ -57,9 +59,8 @@ TEST(Reconnection, NodeRecoversWhenTheMasterIsRestarted)
 
         auto stopping = std::chrono::steady_clock::now();
         ASSERT_TRUE(master("stop", true));
-        ASSERT_TRUE(node.poll_until(
-            [&] { return ubii_node_state(node.get()) != UBII_STATE_READY; },
-            std::chrono::seconds(5)));
+        ASSERT_TRUE(node.poll_until([&] { return ubii_node_state(node.get()) != UBII_STATE_READY; },
+                                    std::chrono::seconds(5)));
         double noticed = seconds_since(stopping);
         EXPECT_EQ(ubii_publish_int32(node.get(), topic.c_str(), 2), UBII_ERR_NOT_CONNECTED);
         ASSERT_TRUE(node.poll_until(master_stopped, std::chrono::seconds(10)));

@@ -6,6 +6,9 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <map>
+#include <memory>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -459,20 +462,24 @@ void PrintTo(const Case &c, std::ostream *out)
     *out << c.name;
 }
 
-class RecordTypes : public ::testing::TestWithParam<Case>
+// Topic data over ZMQ (tcp://) or WebSocket (ws://); one node per transport for all cases.
+class RecordTypes : public ::testing::TestWithParam<std::tuple<std::string, Case>>
 {
 };
 
 TEST_P(RecordTypes, ArriveBitExactThroughTheMaster)
 {
-    static TestNode *node = nullptr;
-    static std::unique_ptr<TestNode> owner;
-    if (node == nullptr) {
-        owner = std::make_unique<TestNode>("record-types");
-        node = owner.get();
+    static std::map<std::string, std::unique_ptr<TestNode>> nodes;
+    const std::string &transport = std::get<0>(GetParam());
+    auto &owner = nodes[transport];
+    if (!owner) {
+        owner = std::make_unique<TestNode>("record-types-" + transport,
+                                           transport == "websocket" ? ubii_test::topic_ws_url()
+                                                                    : ubii_test::topic_zmq_url());
     }
+    TestNode *node = owner.get();
     ASSERT_TRUE(node->wait_ready());
-    const Case &c = GetParam();
+    const Case &c = std::get<1>(GetParam());
     const std::string topic = unique_topic("/" + c.name);
     node->received().clear();
     node->collect(topic);
@@ -503,7 +510,11 @@ TEST_P(RecordTypes, ArriveBitExactThroughTheMaster)
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllMembers, RecordTypes, ::testing::ValuesIn(all_cases()),
-                         [](const auto &test) { return test.param.name; });
+INSTANTIATE_TEST_SUITE_P(AllMembers, RecordTypes,
+                         ::testing::Combine(::testing::Values("zmq", "websocket"),
+                                            ::testing::ValuesIn(all_cases())),
+                         [](const auto &test) {
+                             return std::get<0>(test.param) + "_" + std::get<1>(test.param).name;
+                         });
 
 } // namespace

@@ -14,6 +14,11 @@ static bool starts_with(const char *text, const char *prefix)
     return strncmp(text, prefix, strlen(prefix)) == 0;
 }
 
+static bool uses_lws(const channel *ch)
+{
+    return ch->kind == TRANSPORT_WEBSOCKET || ch->kind == TRANSPORT_HTTP;
+}
+
 static void close_channel(void *context, ubii_channel which)
 {
     ubii_linux_port *port = context;
@@ -22,7 +27,11 @@ static void close_channel(void *context, ubii_channel which)
     }
     channel *ch = &port->channels[which];
     if (ch->kind == TRANSPORT_ZMQ) {
+        ubii__lws_release_zmq(port, ch->zmq.socket);
+        ubii__lws_release_zmq(port, ch->zmq.monitor);
         ubii__zmq_close(ch);
+    } else if (uses_lws(ch)) {
+        ubii__lws_close(port, which);
     }
     ch->kind = TRANSPORT_NONE;
     ch->state = UBII_CHANNEL_CLOSED;
@@ -37,10 +46,21 @@ static ubii_status open_channel(void *context, ubii_channel which, const char *u
     }
     close_channel(port, which);
     channel *ch = &port->channels[which];
+    port->last_error[0] = '\0';
     if (starts_with(url, "tcp://")) {
         ubii_status status = ubii__zmq_open(port, which, url, client_id);
         if (status == UBII_OK) {
             ch->kind = TRANSPORT_ZMQ;
+            ubii__lws_adopt_zmq(port, ch->zmq.socket);
+            ubii__lws_adopt_zmq(port, ch->zmq.monitor);
+        }
+        return status;
+    }
+    if (starts_with(url, "ws://") || starts_with(url, "wss://") || starts_with(url, "http://") ||
+        starts_with(url, "https://")) {
+        ubii_status status = ubii__lws_open(port, which, url, client_id);
+        if (status != UBII_OK) {
+            close_channel(port, which);
         }
         return status;
     }
@@ -75,13 +95,15 @@ static ubii_status send_begin(void *context, ubii_channel which, size_t size, ui
     if (!can_send(ch)) {
         return UBII_ERR_NOT_CONNECTED;
     }
+    if (uses_lws(ch)) {
+        return ubii__lws_send_begin(port, which, size, buffer);
+    }
     return ubii__zmq_send_begin(port, ch, size, buffer);
 }
 
 static ubii_status send_commit(void *context, ubii_channel which, unsigned flags)
 {
     ubii_linux_port *port = context;
-    (void)flags; /* ZMQ frames have no text/binary distinction */
     if ((unsigned)which >= UBII_CHANNEL_COUNT) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
@@ -89,7 +111,10 @@ static ubii_status send_commit(void *context, ubii_channel which, unsigned flags
     if (!can_send(ch)) {
         return UBII_ERR_NOT_CONNECTED;
     }
-    return ubii__zmq_send_commit(ch);
+    if (uses_lws(ch)) {
+        return ubii__lws_send_commit(port, which, flags);
+    }
+    return ubii__zmq_send_commit(ch); /* ZMQ frames have no text/binary distinction */
 }
 
 static ubii_status receive(void *context, ubii_channel which, const uint8_t **data, size_t *size,
@@ -101,15 +126,40 @@ static ubii_status receive(void *context, ubii_channel which, const uint8_t **da
     }
     channel *ch = &port->channels[which];
     *flags = 0;
+    if (uses_lws(ch)) {
+        return ubii__lws_receive(port, which, data, size, flags);
+    }
     if (ch->kind != TRANSPORT_ZMQ) {
         return UBII_ERR_WOULD_BLOCK;
     }
     return ubii__zmq_receive(port, which, data, size);
 }
 
+/* ZMQ's fd signals edges: a message may already wait although the fd is quiet. */
+static bool zmq_message_waiting(ubii_linux_port *port)
+{
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        void *sockets[2] = {port->channels[i].zmq.socket, port->channels[i].zmq.monitor};
+        for (int j = 0; port->channels[i].kind == TRANSPORT_ZMQ && j < 2; ++j) {
+            int events = 0;
+            size_t length = sizeof events;
+            if (sockets[j] != NULL &&
+                zmq_getsockopt(sockets[j], ZMQ_EVENTS, &events, &length) == 0 &&
+                (events & ZMQ_POLLIN)) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
 static ubii_status wait_for_io(void *context, int timeout_ms)
 {
     ubii_linux_port *port = context;
+    if (port->lws != NULL) {
+        ubii__lws_service(port, zmq_message_waiting(port) ? 0 : timeout_ms);
+        return UBII_OK;
+    }
     zmq_pollitem_t items[2 * UBII_CHANNEL_COUNT];
     int count = 0;
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
@@ -138,6 +188,10 @@ static int poll_fds(void *context, ubii_pollfd *fds, int capacity)
             int room = capacity > count ? capacity - count : 0;
             count += ubii__zmq_fds(&port->channels[i], fds != NULL ? fds + count : NULL, room);
         }
+    }
+    if (port->lws != NULL) {
+        int room = capacity > count ? capacity - count : 0;
+        count += ubii__lws_fds(port, fds != NULL ? fds + count : NULL, room);
     }
     return count;
 }
@@ -201,6 +255,12 @@ void ubii_linux_port_destroy(ubii_linux_port *port)
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
         close_channel(port, (ubii_channel)i);
     }
+    ubii__lws_destroy(port);
     zmq_ctx_term(port->zmq_context);
     free(port);
+}
+
+const char *ubii_linux_port_last_error(const ubii_linux_port *port)
+{
+    return port != NULL ? port->last_error : "";
 }

@@ -31,7 +31,13 @@ typedef struct ubii_linux_port_options {
     size_t max_message_size;
     /* TLS (wss://, https://): accept self-signed certificates, e.g. a master's own. */
     bool allow_self_signed;
+    /* If not 0, passed to lws_set_log_level() (process-wide) when the first WebSocket or HTTP
+     * channel opens, e.g. LLL_ERR to keep libwebsockets' notices off stderr. */
+    int libwebsockets_log_level;
 } ubii_linux_port_options;
+
+/* A short English description of the port's last transport failure ("" if none). */
+UBII_API const char *ubii_linux_port_last_error(const ubii_linux_port *port);
 
 /* Creates a port; `options` may be NULL for the defaults. UBII_ERR_TRANSPORT if libzmq fails. */
 UBII_API ubii_status ubii_linux_port_create(ubii_linux_port **port,

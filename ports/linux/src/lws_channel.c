@@ -1,0 +1,774 @@
+/* WebSocket topic data (ws://, wss://) and binary HTTP services (http://, https://) through
+ * libwebsockets.
+ *
+ * Debian's libwebsockets is built without external-poll support, so lws drives the waiting: it
+ * alone knows when its sockets need POLLOUT (e.g. during a non-blocking connect). ZMQ's fds are
+ * adopted into it (as dup'd raw descriptors) so that ZMQ traffic wakes it as well, and a
+ * scheduled timer bounds every wait.
+ *
+ * Each WebSocket or HTTP connection has a record that outlives the channel if need be: closing a
+ * channel detaches the record and asks lws to kill the connection; lws frees it on WSI_DESTROY. */
+#define _POSIX_C_SOURCE 200809L /* dup */
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <libwebsockets.h>
+
+#include "linux_port.h"
+
+enum {
+    RX_CHUNK = 64 * 1024,
+    INBOX_PAUSE_COUNT = 1024, /* stop reading the socket while this many messages wait */
+    OUTBOX_LIMIT_COUNT = 4096
+};
+
+typedef struct lws_connection {
+    ubii_linux_port *port; /* NULL once the channel has let go of it */
+    ubii_channel which;
+    struct lws *wsi;
+    bool http;
+    /* WebSocket: the message being assembled from fragments. */
+    uint8_t *assembly;
+    size_t assembled;
+    size_t assembly_capacity;
+    unsigned assembly_flags;
+    /* HTTP: the request body (after LWS_PRE bytes) and the response. */
+    uint8_t *request;
+    size_t request_size;
+    int status;
+} lws_connection;
+
+/* ---- queues -----------------------------------------------------------------------------------
+ */
+
+static queued_message *new_message(size_t size, size_t headroom)
+{
+    queued_message *message = malloc(sizeof *message + headroom + size);
+    if (message == NULL) {
+        return NULL;
+    }
+    message->next = NULL;
+    message->size = size;
+    message->flags = 0;
+    message->data = (uint8_t *)(message + 1) + headroom;
+    return message;
+}
+
+static void push(message_queue *queue, queued_message *message)
+{
+    if (queue->tail != NULL) {
+        queue->tail->next = message;
+    } else {
+        queue->head = message;
+    }
+    queue->tail = message;
+    queue->count++;
+    queue->bytes += message->size;
+}
+
+static queued_message *pop(message_queue *queue)
+{
+    queued_message *message = queue->head;
+    if (message != NULL) {
+        queue->head = message->next;
+        if (queue->head == NULL) {
+            queue->tail = NULL;
+        }
+        queue->count--;
+        queue->bytes -= message->size;
+        message->next = NULL;
+    }
+    return message;
+}
+
+static void clear(message_queue *queue)
+{
+    queued_message *message;
+    while ((message = pop(queue)) != NULL) {
+        free(message);
+    }
+}
+
+/* ---- helpers ----------------------------------------------------------------------------------
+ */
+
+static void set_error(ubii_linux_port *port, const char *what, const char *detail)
+{
+    snprintf(port->last_error, sizeof port->last_error, "%s%s%s", what, detail ? ": " : "",
+             detail ? detail : "");
+}
+
+static lws_channel *channel_of(lws_connection *connection)
+{
+    return connection->port != NULL ? &connection->port->channels[connection->which].lws : NULL;
+}
+
+static void lose(lws_connection *connection, const char *what, const char *detail)
+{
+    if (connection->port == NULL) {
+        return;
+    }
+    set_error(connection->port, what, detail);
+    connection->port->channels[connection->which].state = UBII_CHANNEL_LOST;
+}
+
+static void detach(lws_connection *connection)
+{
+    free(connection->assembly);
+    connection->assembly = NULL;
+    free(connection->request);
+    connection->request = NULL;
+    connection->port = NULL;
+}
+
+/* Parses scheme://host[:port][/path]; IPv6 hosts in brackets. */
+static bool parse_url(const char *url, lws_channel *ch, bool *tls, bool *websocket)
+{
+    const char *rest;
+    if (strncmp(url, "ws://", 5) == 0 || strncmp(url, "http://", 7) == 0) {
+        *tls = false;
+    } else if (strncmp(url, "wss://", 6) == 0 || strncmp(url, "https://", 8) == 0) {
+        *tls = true;
+    } else {
+        return false;
+    }
+    *websocket = url[0] == 'w';
+    rest = strstr(url, "://") + 3;
+    const char *host_end;
+    const char *host = rest;
+    if (*rest == '[') {
+        host = rest + 1;
+        host_end = strchr(host, ']');
+        if (host_end == NULL) {
+            return false;
+        }
+        rest = host_end + 1;
+    } else {
+        host_end = rest + strcspn(rest, ":/?");
+        rest = host_end;
+    }
+    size_t host_length = (size_t)(host_end - host);
+    if (host_length == 0 || host_length >= sizeof ch->host) {
+        return false;
+    }
+    memcpy(ch->host, host, host_length);
+    ch->host[host_length] = '\0';
+    ch->port = *tls ? 443 : 80;
+    if (*rest == ':') {
+        char *end;
+        long port = strtol(rest + 1, &end, 10);
+        if (end == rest + 1 || port <= 0 || port > 65535) {
+            return false;
+        }
+        ch->port = (int)port;
+        rest = end;
+    }
+    const char *path = *rest != '\0' ? rest : "/";
+    if (strlen(path) + 1 > sizeof ch->path) {
+        return false;
+    }
+    snprintf(ch->path, sizeof ch->path, "%s%s", path[0] == '/' ? "" : "/", path);
+    return true;
+}
+
+/* ---- the lws context ----------------------------------------------------------------------------
+ */
+
+static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+                        size_t len);
+static int on_http(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+                   size_t len);
+static int on_zmq_wakeup(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+                         size_t len);
+
+static const struct lws_protocols protocols[] = {
+    {"ubii-ws", on_websocket, 0, RX_CHUNK, 0, NULL, 0},
+    {"ubii-http", on_http, 0, RX_CHUNK, 0, NULL, 0},
+    {"ubii-zmq-wakeup", on_zmq_wakeup, 0, 0, 0, NULL, 0},
+    {NULL, NULL, 0, 0, 0, NULL, 0}};
+
+static bool ensure_context(ubii_linux_port *port)
+{
+    if (port->lws != NULL) {
+        return true;
+    }
+    if (port->options.libwebsockets_log_level != 0) {
+        lws_set_log_level(port->options.libwebsockets_log_level, NULL);
+    }
+    struct lws_context_creation_info info;
+    memset(&info, 0, sizeof info);
+    info.port = CONTEXT_PORT_NO_LISTEN;
+    info.protocols = protocols;
+    info.options = LWS_SERVER_OPTION_DO_SSL_GLOBAL_INIT;
+    info.gid = -1;
+    info.uid = -1;
+    info.user = port;
+    port->lws = lws_create_context(&info);
+    if (port->lws == NULL) {
+        set_error(port, "libwebsockets context could not be created", NULL);
+        return false;
+    }
+    port->vhost = lws_get_vhost_by_name(port->lws, "default");
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        if (port->channels[i].kind == TRANSPORT_ZMQ) {
+            ubii__lws_adopt_zmq(port, port->channels[i].zmq.socket);
+            ubii__lws_adopt_zmq(port, port->channels[i].zmq.monitor);
+        }
+    }
+    return true;
+}
+
+void ubii__lws_destroy(ubii_linux_port *port)
+{
+    if (port->lws != NULL) {
+        lws_context_destroy(port->lws);
+        port->lws = NULL;
+        port->vhost = NULL;
+    }
+    for (int i = 0; i < MAX_ZMQ_WAKEUPS; ++i) {
+        free(port->wakeups[i]);
+        port->wakeups[i] = NULL;
+    }
+}
+
+/* ---- ZMQ fds inside lws
+ * -------------------------------------------------------------------------- */
+
+void ubii__lws_adopt_zmq(ubii_linux_port *port, void *socket)
+{
+    if (port->lws == NULL || socket == NULL) {
+        return;
+    }
+    int fd = -1;
+    size_t length = sizeof fd;
+    if (zmq_getsockopt(socket, ZMQ_FD, &fd, &length) != 0) {
+        return;
+    }
+    for (int i = 0; i < MAX_ZMQ_WAKEUPS; ++i) {
+        if (port->wakeups[i] != NULL) {
+            continue;
+        }
+        zmq_wakeup *wakeup = calloc(1, sizeof *wakeup);
+        if (wakeup == NULL) {
+            return;
+        }
+        /* lws closes what it adopts: it gets a duplicate, never libzmq's own fd. */
+        lws_adopt_desc_t desc;
+        memset(&desc, 0, sizeof desc);
+        desc.vh = port->vhost;
+        desc.type = LWS_ADOPT_RAW_FILE_DESC;
+        desc.fd.filefd = dup(fd);
+        desc.vh_prot_name = "ubii-zmq-wakeup";
+        desc.opaque = wakeup;
+        wakeup->port = port;
+        wakeup->socket = socket;
+        port->wakeups[i] = wakeup;
+        wakeup->wsi = desc.fd.filefd >= 0 ? lws_adopt_descriptor_vhost_via_info(&desc) : NULL;
+        if (wakeup->wsi == NULL) {
+            port->wakeups[i] = NULL;
+            free(wakeup);
+        }
+        return;
+    }
+}
+
+void ubii__lws_release_zmq(ubii_linux_port *port, void *socket)
+{
+    for (int i = 0; i < MAX_ZMQ_WAKEUPS; ++i) {
+        zmq_wakeup *wakeup = port->wakeups[i];
+        if (wakeup == NULL || wakeup->socket != socket) {
+            continue;
+        }
+        wakeup->socket = NULL; /* its callback must not touch the socket about to close */
+        port->wakeups[i] = NULL;
+        if (wakeup->wsi != NULL) {
+            lws_set_timeout(wakeup->wsi, PENDING_TIMEOUT_USER_OK, LWS_TO_KILL_SYNC);
+        } else {
+            free(wakeup);
+        }
+    }
+}
+
+static int on_zmq_wakeup(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+                         size_t len)
+{
+    (void)user;
+    (void)in;
+    (void)len;
+    zmq_wakeup *wakeup = lws_get_opaque_user_data(wsi);
+    if (wakeup == NULL) {
+        return 0;
+    }
+    if (reason == LWS_CALLBACK_RAW_RX_FILE && wakeup->socket != NULL) {
+        /* Reading ZMQ_EVENTS lets libzmq consume its signal, so the fd stops being readable. */
+        int events = 0;
+        size_t length = sizeof events;
+        zmq_getsockopt(wakeup->socket, ZMQ_EVENTS, &events, &length);
+    } else if (reason == LWS_CALLBACK_RAW_CLOSE_FILE) {
+        lws_set_opaque_user_data(wsi, NULL);
+        if (wakeup->socket == NULL) {
+            free(wakeup); /* released: nobody else holds it */
+        } else {
+            wakeup->wsi = NULL;
+        }
+    }
+    return 0;
+}
+
+/* ---- WebSocket ---------------------------------------------------------------------------------
+ */
+
+static bool append(lws_connection *connection, const void *in, size_t len, size_t limit)
+{
+    if (connection->assembled + len > limit) {
+        return false;
+    }
+    if (connection->assembled + len > connection->assembly_capacity) {
+        size_t capacity = connection->assembly_capacity ? connection->assembly_capacity : 4096;
+        while (capacity < connection->assembled + len) {
+            capacity *= 2;
+        }
+        uint8_t *grown = realloc(connection->assembly, capacity);
+        if (grown == NULL) {
+            return false;
+        }
+        connection->assembly = grown;
+        connection->assembly_capacity = capacity;
+    }
+    memcpy(connection->assembly + connection->assembled, in, len);
+    connection->assembled += len;
+    return true;
+}
+
+static void deliver_assembled(lws_connection *connection, lws_channel *ch)
+{
+    queued_message *message = new_message(connection->assembled, 0);
+    if (message == NULL) {
+        lose(connection, "out of memory for a received message", NULL);
+        return;
+    }
+    memcpy(message->data, connection->assembly, connection->assembled);
+    message->flags = connection->assembly_flags;
+    push(&ch->inbox, message);
+    connection->assembled = 0;
+    if (ch->inbox.count >= INBOX_PAUSE_COUNT && !ch->flow_paused) {
+        lws_rx_flow_control(connection->wsi, 0);
+        ch->flow_paused = true;
+    }
+}
+
+static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+                        size_t len)
+{
+    (void)user;
+    lws_connection *connection = lws_get_opaque_user_data(wsi);
+    if (connection == NULL) {
+        return 0;
+    }
+    lws_channel *ch = channel_of(connection);
+    switch (reason) {
+    case LWS_CALLBACK_CLIENT_ESTABLISHED:
+        if (ch != NULL) {
+            connection->port->channels[connection->which].state = UBII_CHANNEL_OPEN;
+            if (ch->outbox.count > 0) {
+                lws_callback_on_writable(wsi);
+            }
+        }
+        break;
+    case LWS_CALLBACK_CLIENT_RECEIVE:
+        if (ch == NULL) {
+            return -1;
+        }
+        if (lws_is_first_fragment(wsi)) {
+            connection->assembled = 0;
+            connection->assembly_flags = lws_frame_is_binary(wsi) ? 0 : UBII_MESSAGE_TEXT;
+        }
+        if (!append(connection, in, len, connection->port->options.max_message_size)) {
+            lose(connection, "message over the size limit", NULL);
+            return -1;
+        }
+        if (lws_is_final_fragment(wsi) && lws_remaining_packet_payload(wsi) == 0) {
+            deliver_assembled(connection, ch);
+        }
+        break;
+    case LWS_CALLBACK_CLIENT_WRITEABLE: {
+        if (ch == NULL) {
+            return -1; /* the channel was closed: end the connection */
+        }
+        queued_message *message = pop(&ch->outbox);
+        if (message == NULL) {
+            break;
+        }
+        enum lws_write_protocol kind =
+            message->flags & UBII_MESSAGE_TEXT ? LWS_WRITE_TEXT : LWS_WRITE_BINARY;
+        int written = lws_write(wsi, message->data, message->size, kind);
+        free(message);
+        if (written < 0) {
+            lose(connection, "WebSocket write failed", NULL);
+            return -1;
+        }
+        if (ch->outbox.count > 0) {
+            lws_callback_on_writable(wsi);
+        }
+        break;
+    }
+    case LWS_CALLBACK_CLIENT_CONNECTION_ERROR:
+        lose(connection, "WebSocket connection failed", in != NULL ? (const char *)in : NULL);
+        break;
+    case LWS_CALLBACK_CLIENT_CLOSED:
+        lose(connection, "WebSocket closed by the master", NULL);
+        break;
+    case LWS_CALLBACK_WSI_DESTROY:
+        if (ch != NULL) {
+            ch->connection = NULL;
+            if (connection->port->channels[connection->which].state != UBII_CHANNEL_CLOSED) {
+                lose(connection, "WebSocket connection ended", NULL);
+            }
+        }
+        detach(connection);
+        free(connection);
+        lws_set_opaque_user_data(wsi, NULL);
+        break;
+    default:
+        break;
+    }
+    return 0;
+}
+
+static ubii_status connect_websocket(ubii_linux_port *port, ubii_channel which,
+                                     const char *client_id)
+{
+    lws_channel *ch = &port->channels[which].lws;
+    char path[sizeof ch->path + 320];
+    if (client_id == NULL || client_id[0] == '\0' || strlen(client_id) > 255) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    snprintf(path, sizeof path, "%s%sclientID=%s", ch->path, strchr(ch->path, '?') ? "&" : "?",
+             client_id);
+    lws_connection *connection = calloc(1, sizeof *connection);
+    if (connection == NULL) {
+        return UBII_ERR_TRANSPORT;
+    }
+    connection->port = port;
+    connection->which = which;
+
+    struct lws_client_connect_info info;
+    memset(&info, 0, sizeof info);
+    info.context = port->lws;
+    info.address = ch->host;
+    info.port = ch->port;
+    info.path = path;
+    info.host = ch->host;
+    info.origin = ch->host;
+    info.ietf_version_or_minus_one = -1;
+    info.local_protocol_name = "ubii-ws"; /* no Sec-WebSocket-Protocol: the master offers none */
+    info.opaque_user_data = connection;
+    if (ch->tls) {
+        info.ssl_connection = LCCSCF_USE_SSL;
+        if (port->options.allow_self_signed) {
+            info.ssl_connection |= LCCSCF_ALLOW_SELFSIGNED | LCCSCF_SKIP_SERVER_CERT_HOSTNAME_CHECK;
+        }
+    }
+    ch->connection = connection;
+    port->channels[which].state = UBII_CHANNEL_CONNECTING;
+    connection->wsi = lws_client_connect_via_info(&info);
+    if (connection->wsi == NULL && ch->connection == connection) {
+        /* Failed at once (lws may already have reported it and freed nothing). */
+        ch->connection = NULL;
+        free(connection);
+        port->channels[which].state = UBII_CHANNEL_LOST;
+        set_error(port, "WebSocket connection could not be started", NULL);
+    }
+    return UBII_OK;
+}
+
+/* ---- HTTP -------------------------------------------------------------------------------------
+ */
+
+static int on_http(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+                   size_t len)
+{
+    (void)user;
+    lws_connection *connection = lws_get_opaque_user_data(wsi);
+    if (connection == NULL) {
+        return 0;
+    }
+    lws_channel *ch = channel_of(connection);
+    switch (reason) {
+    case LWS_CALLBACK_CLIENT_APPEND_HANDSHAKE_HEADER: {
+        if (ch == NULL) {
+            return -1;
+        }
+        unsigned char **p = in;
+        unsigned char *end = *p + len;
+        static const char type[] = "application/octet-stream";
+        if (lws_add_http_header_by_token(wsi, WSI_TOKEN_HTTP_CONTENT_TYPE,
+                                         (const unsigned char *)type, (int)sizeof type - 1, p,
+                                         end) ||
+            lws_add_http_header_content_length(wsi, connection->request_size, p, end)) {
+            return -1;
+        }
+        lws_client_http_body_pending(wsi, 1);
+        lws_callback_on_writable(wsi);
+        break;
+    }
+    case LWS_CALLBACK_CLIENT_HTTP_WRITEABLE:
+        if (ch == NULL || connection->request == NULL) {
+            return -1;
+        }
+        if (lws_write(wsi, connection->request + LWS_PRE, connection->request_size,
+                      LWS_WRITE_HTTP_FINAL) < 0) {
+            lose(connection, "HTTP request could not be written", NULL);
+            return -1;
+        }
+        lws_client_http_body_pending(wsi, 0);
+        break;
+    case LWS_CALLBACK_ESTABLISHED_CLIENT_HTTP:
+        connection->status = (int)lws_http_client_http_response(wsi);
+        connection->assembled = 0;
+        break;
+    case LWS_CALLBACK_RECEIVE_CLIENT_HTTP: {
+        char buffer[LWS_PRE + 4096];
+        char *start = buffer + LWS_PRE;
+        int length = (int)sizeof buffer - LWS_PRE;
+        if (lws_http_client_read(wsi, &start, &length) < 0) {
+            return -1;
+        }
+        break;
+    }
+    case LWS_CALLBACK_RECEIVE_CLIENT_HTTP_READ:
+        if (ch == NULL) {
+            return -1;
+        }
+        if (!append(connection, in, len, connection->port->options.max_message_size)) {
+            lose(connection, "HTTP reply over the size limit", NULL);
+            return -1;
+        }
+        break;
+    case LWS_CALLBACK_COMPLETED_CLIENT_HTTP:
+        if (ch != NULL) {
+            if (connection->status == 200) {
+                connection->assembly_flags = 0;
+                deliver_assembled(connection, ch);
+            } else {
+                char status[32];
+                snprintf(status, sizeof status, "%d", connection->status);
+                lose(connection, "HTTP service answered with status", status);
+            }
+            ch->connection = NULL;
+            detach(connection);
+        }
+        return -1; /* one request per connection */
+    case LWS_CALLBACK_CLIENT_CONNECTION_ERROR:
+        lose(connection, "HTTP connection failed", in != NULL ? (const char *)in : NULL);
+        break;
+    case LWS_CALLBACK_WSI_DESTROY:
+        if (ch != NULL && ch->connection == connection) {
+            ch->connection = NULL;
+        }
+        detach(connection);
+        free(connection);
+        lws_set_opaque_user_data(wsi, NULL);
+        break;
+    default:
+        break;
+    }
+    return 0;
+}
+
+static ubii_status post_request(ubii_linux_port *port, ubii_channel which, queued_message *body)
+{
+    lws_channel *ch = &port->channels[which].lws;
+    lws_connection *connection = calloc(1, sizeof *connection);
+    if (connection == NULL) {
+        free(body);
+        return UBII_ERR_TRANSPORT;
+    }
+    connection->port = port;
+    connection->which = which;
+    connection->http = true;
+    /* The message was allocated with LWS_PRE bytes of headroom; keep that layout. */
+    connection->request = malloc(LWS_PRE + body->size);
+    if (connection->request == NULL) {
+        free(body);
+        free(connection);
+        return UBII_ERR_TRANSPORT;
+    }
+    memcpy(connection->request + LWS_PRE, body->data, body->size);
+    connection->request_size = body->size;
+    free(body);
+
+    struct lws_client_connect_info info;
+    memset(&info, 0, sizeof info);
+    info.context = port->lws;
+    info.address = ch->host;
+    info.port = ch->port;
+    info.path = ch->path;
+    info.host = ch->host;
+    info.origin = ch->host;
+    info.method = "POST";
+    info.local_protocol_name = "ubii-http";
+    info.opaque_user_data = connection;
+    if (ch->tls) {
+        info.ssl_connection = LCCSCF_USE_SSL;
+        if (port->options.allow_self_signed) {
+            info.ssl_connection |= LCCSCF_ALLOW_SELFSIGNED | LCCSCF_SKIP_SERVER_CERT_HOSTNAME_CHECK;
+        }
+    }
+    ch->connection = connection;
+    connection->wsi = lws_client_connect_via_info(&info);
+    if (connection->wsi == NULL && ch->connection == connection) {
+        ch->connection = NULL;
+        detach(connection);
+        free(connection);
+        port->channels[which].state = UBII_CHANNEL_LOST;
+        set_error(port, "HTTP request could not be started", NULL);
+    }
+    return UBII_OK;
+}
+
+/* ---- the port functions ------------------------------------------------------------------------
+ */
+
+ubii_status ubii__lws_open(ubii_linux_port *port, ubii_channel which, const char *url,
+                           const char *client_id)
+{
+    channel *c = &port->channels[which];
+    lws_channel *ch = &c->lws;
+    bool websocket;
+    memset(ch, 0, sizeof *ch);
+    if (!parse_url(url, ch, &ch->tls, &websocket)) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    if (websocket != (which == UBII_CHANNEL_TOPIC)) {
+        return UBII_ERR_UNSUPPORTED; /* topic data over WebSocket, services over HTTP */
+    }
+    if (!ensure_context(port)) {
+        return UBII_ERR_TRANSPORT;
+    }
+    c->kind = websocket ? TRANSPORT_WEBSOCKET : TRANSPORT_HTTP;
+    if (websocket) {
+        return connect_websocket(port, which, client_id);
+    }
+    c->state = UBII_CHANNEL_OPEN; /* each request makes its own connection */
+    return UBII_OK;
+}
+
+void ubii__lws_close(ubii_linux_port *port, ubii_channel which)
+{
+    lws_channel *ch = &port->channels[which].lws;
+    if (ch->connection != NULL) {
+        lws_connection *connection = ch->connection;
+        ch->connection = NULL;
+        detach(connection);
+        if (connection->wsi != NULL) {
+            lws_set_timeout(connection->wsi, PENDING_TIMEOUT_USER_OK, LWS_TO_KILL_ASYNC);
+        }
+    }
+    clear(&ch->inbox);
+    clear(&ch->outbox);
+    free(ch->taken);
+    ch->taken = NULL;
+    free(ch->reserved);
+    ch->reserved = NULL;
+}
+
+ubii_status ubii__lws_send_begin(ubii_linux_port *port, ubii_channel which, size_t size,
+                                 uint8_t **buffer)
+{
+    lws_channel *ch = &port->channels[which].lws;
+    if (size > port->options.max_message_size) {
+        return UBII_ERR_TOO_LARGE;
+    }
+    if (ch->outbox.count >= OUTBOX_LIMIT_COUNT) {
+        return UBII_ERR_WOULD_BLOCK;
+    }
+    free(ch->reserved);
+    ch->reserved = new_message(size, LWS_PRE);
+    if (ch->reserved == NULL) {
+        return UBII_ERR_TRANSPORT;
+    }
+    *buffer = ch->reserved->data;
+    return UBII_OK;
+}
+
+ubii_status ubii__lws_send_commit(ubii_linux_port *port, ubii_channel which, unsigned flags)
+{
+    channel *c = &port->channels[which];
+    lws_channel *ch = &c->lws;
+    queued_message *message = ch->reserved;
+    if (message == NULL) {
+        return UBII_ERR_STATE;
+    }
+    ch->reserved = NULL;
+    message->flags = flags;
+    if (c->kind == TRANSPORT_HTTP) {
+        if (ch->connection != NULL) {
+            free(message);
+            return UBII_ERR_WOULD_BLOCK; /* one request at a time, as over ZMQ */
+        }
+        return post_request(port, which, message);
+    }
+    push(&ch->outbox, message);
+    if (ch->connection != NULL && ch->connection->wsi != NULL && c->state == UBII_CHANNEL_OPEN) {
+        lws_callback_on_writable(ch->connection->wsi);
+    }
+    return UBII_OK;
+}
+
+ubii_status ubii__lws_receive(ubii_linux_port *port, ubii_channel which, const uint8_t **data,
+                              size_t *size, unsigned *flags)
+{
+    lws_channel *ch = &port->channels[which].lws;
+    free(ch->taken);
+    ch->taken = pop(&ch->inbox);
+    if (ch->flow_paused && ch->inbox.count < INBOX_PAUSE_COUNT / 2 && ch->connection != NULL &&
+        ch->connection->wsi != NULL) {
+        lws_rx_flow_control(ch->connection->wsi, 1);
+        ch->flow_paused = false;
+    }
+    if (ch->taken == NULL) {
+        return UBII_ERR_WOULD_BLOCK;
+    }
+    *data = ch->taken->data;
+    *size = ch->taken->size;
+    *flags = ch->taken->flags;
+    return UBII_OK;
+}
+
+static void wake_up(lws_sorted_usec_list_t *timer)
+{
+    (void)timer; /* lws_service returns once this has run */
+}
+
+void ubii__lws_service(ubii_linux_port *port, int timeout_ms)
+{
+    lws_sorted_usec_list_t timer;
+    memset(&timer, 0, sizeof timer);
+    lws_sul_schedule(port->lws, 0, &timer, wake_up, (lws_usec_t)timeout_ms * LWS_US_PER_MS);
+    lws_service(port->lws, 0);
+    lws_sul_cancel(&timer);
+}
+
+int ubii__lws_fds(ubii_linux_port *port, ubii_pollfd *fds, int capacity)
+{
+    int count = 0;
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        lws_connection *connection = port->channels[i].lws.connection;
+        if (connection == NULL || connection->wsi == NULL) {
+            continue;
+        }
+        int fd = (int)lws_get_socket_fd(connection->wsi);
+        if (fd >= 0) {
+            if (count < capacity) {
+                fds[count].fd = fd;
+                fds[count].events = 1; /* POLLIN */
+            }
+            count++;
+        }
+    }
+    return count;
+}
