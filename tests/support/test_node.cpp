@@ -49,7 +49,9 @@ TestNode::TestNode(const std::string &name, const std::string &topic_url,
     config_.on_error_user = this;
     config_.on_state = on_state;
     config_.on_state_user = this;
-    if (ubii_linux_port_create(&port_, nullptr) != UBII_OK) {
+    ubii_linux_port_options options{};
+    options.libwebsockets_log_level = 1; // LLL_ERR: no notice per HTTP transaction
+    if (ubii_linux_port_create(&port_, &options) != UBII_OK) {
         throw std::runtime_error("cannot create the Linux port");
     }
 }

@@ -741,16 +741,29 @@ ubii_status ubii__lws_receive(ubii_linux_port *port, ubii_channel which, const u
 
 static void wake_up(lws_sorted_usec_list_t *timer)
 {
-    (void)timer; /* lws_service returns once this has run */
+    (void)timer; /* lws_service returns once it has run */
 }
 
+/* lws_service() ignores its timeout argument and sleeps until the next scheduled timer; a timer
+ * already due when it looks is run first and then no longer bounds the sleep. So a zero wait uses
+ * lws's non-blocking form (-1), and a positive wait gets a second, later timer as a safety net in
+ * case the first one falls due before lws polls. */
 void ubii__lws_service(ubii_linux_port *port, int timeout_ms)
 {
-    lws_sorted_usec_list_t timer;
+    enum { SAFETY_MARGIN_MS = 20 };
+    if (timeout_ms <= 0) {
+        lws_service(port->lws, -1);
+        return;
+    }
+    lws_sorted_usec_list_t timer, safety;
     memset(&timer, 0, sizeof timer);
+    memset(&safety, 0, sizeof safety);
     lws_sul_schedule(port->lws, 0, &timer, wake_up, (lws_usec_t)timeout_ms * LWS_US_PER_MS);
+    lws_sul_schedule(port->lws, 0, &safety, wake_up,
+                     (lws_usec_t)(timeout_ms + SAFETY_MARGIN_MS) * LWS_US_PER_MS);
     lws_service(port->lws, 0);
     lws_sul_cancel(&timer);
+    lws_sul_cancel(&safety);
 }
 
 int ubii__lws_fds(ubii_linux_port *port, ubii_pollfd *fds, int capacity)

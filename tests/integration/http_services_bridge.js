@@ -1,0 +1,43 @@
+// The current master's binary HTTP service endpoint, as PROTOCOL.md 1.3 states it, in front of the
+// npm 0.4.0 master (which lacks it): POST /services/binary with Content-Type
+// application/octet-stream carries a serialized ServiceRequest; the answer is HTTP 200,
+// application/octet-stream, a serialized ServiceReply (service errors too). Requests are handed to
+// the master's ZMQ REP socket, one at a time as REQ/REP demands. A request that breaks the contract
+// (other path or method: 404; wrong Content-Type, no Host, wrong Content-Length: 400) makes the
+// node's test fail, since no ServiceReply comes back.
+//   node http_services_bridge.js LISTEN_PORT MASTER_SERVICE_PORT ZEROMQ_MODULE_DIR
+'use strict';
+const http = require('http');
+const [listenPort, masterPort, zeromqDir] = process.argv.slice(2);
+const zmq = require(zeromqDir);
+
+const socket = zmq.socket('req');
+socket.connect(`tcp://127.0.0.1:${masterPort}`);
+const waiting = [];
+socket.on('message', (reply) => {
+  const { response } = waiting.shift();
+  response.writeHead(200, { 'Content-Type': 'application/octet-stream' });
+  response.end(reply);
+  if (waiting.length > 0) socket.send(waiting[0].body);
+});
+
+const server = http.createServer((request, response) => {
+  const chunks = [];
+  request.on('data', (chunk) => chunks.push(chunk));
+  request.on('end', () => {
+    const body = Buffer.concat(chunks);
+    if (request.method !== 'POST' || request.url !== '/services/binary') {
+      response.writeHead(404);
+      return response.end();
+    }
+    if (request.headers['content-type'] !== 'application/octet-stream' || !request.headers.host ||
+        Number(request.headers['content-length']) !== body.length) {
+      response.writeHead(400);
+      return response.end();
+    }
+    waiting.push({ body, response });
+    if (waiting.length === 1) socket.send(body);
+  });
+});
+server.listen(Number(listenPort), '127.0.0.1', () => console.log(`bridge ready on ${listenPort}`));
+process.on('SIGTERM', () => process.exit(0));
