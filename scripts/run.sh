@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds libubii, starts a local Ubi-Interact master in a
-# private network namespace and runs a node against it (for now examples/c/hello, which fetches and
-# prints the master's server configuration), then stops the master.
+# private network namespace and runs nodes against it, then stops the master:
+#   hello        the master's server configuration
+#   pubsub       two nodes exchanging records over ZMQ, then over WebSocket
+#   engine_tick  a 60 Hz frame loop driving a node through its file descriptors
+#   services     the master's services, topics and clients
 #
 #   scripts/run.sh             build tree in ./build/run
 #   UBII_BUILD_DIR=DIR ...     build tree below DIR instead
@@ -20,5 +23,12 @@ exec "$root/scripts/private-net.sh" bash -c '
   state=$(mktemp -d)
   trap "\"$1/scripts/master.sh\" stop \"\$state\" >/dev/null; rm -rf \"\$state\"" EXIT
   "$1/scripts/master.sh" start "$state"
-  "$2/examples/hello" tcp://127.0.0.1:8101
+  for step in "hello tcp://127.0.0.1:8101" \
+              "pubsub tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 2" \
+              "pubsub tcp://127.0.0.1:8101 ws://127.0.0.1:8104 2" \
+              "engine_tick tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 3" \
+              "services tcp://127.0.0.1:8101 tcp://127.0.0.1:8103"; do
+    echo "=== $step"
+    "$2"/examples/$step
+  done
 ' run "$root" "$build"

@@ -237,6 +237,10 @@ ubii_status ubii_linux_port_create(ubii_linux_port **result, const ubii_linux_po
         free(port);
         return UBII_ERR_TRANSPORT;
     }
+    if (!port->options.zmq_only && !ubii__lws_start(port)) {
+        ubii_linux_port_destroy(port);
+        return UBII_ERR_TRANSPORT;
+    }
     *result = port;
     return UBII_OK;
 }

@@ -88,6 +88,8 @@ struct ubii_linux_port {
 };
 
 /* lws_channel.c */
+/* Starts libwebsockets (once); false if it cannot. */
+bool ubii__lws_start(ubii_linux_port *port);
 ubii_status ubii__lws_open(ubii_linux_port *port, ubii_channel which, const char *url,
                            const char *client_id);
 void ubii__lws_close(ubii_linux_port *port, ubii_channel which);

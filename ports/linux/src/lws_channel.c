@@ -190,7 +190,7 @@ static const struct lws_protocols protocols[] = {
     {"ubii-zmq-wakeup", on_zmq_wakeup, 0, 0, 0, NULL, 0},
     {NULL, NULL, 0, 0, 0, NULL, 0}};
 
-static bool ensure_context(ubii_linux_port *port)
+bool ubii__lws_start(ubii_linux_port *port)
 {
     if (port->lws != NULL) {
         return true;
@@ -646,8 +646,8 @@ ubii_status ubii__lws_open(ubii_linux_port *port, ubii_channel which, const char
     if (websocket != (which == UBII_CHANNEL_TOPIC)) {
         return UBII_ERR_UNSUPPORTED; /* topic data over WebSocket, services over HTTP */
     }
-    if (!ensure_context(port)) {
-        return UBII_ERR_TRANSPORT;
+    if (port->lws == NULL) {
+        return port->options.zmq_only ? UBII_ERR_UNSUPPORTED : UBII_ERR_TRANSPORT;
     }
     c->kind = websocket ? TRANSPORT_WEBSOCKET : TRANSPORT_HTTP;
     if (websocket) {

@@ -4,7 +4,8 @@
 /* The Linux port: ZeroMQ (tcp://) for services and topic data, libwebsockets for WebSocket topic
  * data (ws://, wss://) and binary HTTP services (http://, https://). Unlike the core, this port
  * allocates (libzmq and libwebsockets do); it starts no thread of its own besides libzmq's I/O
- * thread.
+ * thread. Host names in ws:// and http:// URLs are resolved by libwebsockets synchronously when
+ * a connection starts; where a frame must never stall, give an IP address.
  *
  *     ubii_linux_port *linux_port;
  *     ubii_linux_port_create(&linux_port, NULL);
@@ -31,9 +32,13 @@ typedef struct ubii_linux_port_options {
     size_t max_message_size;
     /* TLS (wss://, https://): accept self-signed certificates, e.g. a master's own. */
     bool allow_self_signed;
-    /* If not 0, passed to lws_set_log_level() (process-wide) when the first WebSocket or HTTP
-     * channel opens, e.g. LLL_ERR to keep libwebsockets' notices off stderr. */
+    /* If not 0, passed to lws_set_log_level() (process-wide) before libwebsockets starts, e.g.
+     * LLL_ERR (1) to keep its notices off stderr. */
     int libwebsockets_log_level;
+    /* Only tcp:// (ZMQ) URLs: libwebsockets is never started, ws:// and http:// give
+     * UBII_ERR_UNSUPPORTED. Otherwise libwebsockets starts in ubii_linux_port_create (about 40 ms
+     * for its TLS set-up), so that no ubii_node_poll() ever pays for it. */
+    bool zmq_only;
 } ubii_linux_port_options;
 
 /* A short English description of the port's last transport failure ("" if none). */
