@@ -153,10 +153,22 @@ static bool zmq_message_waiting(ubii_linux_port *port)
     return false;
 }
 
+/* libwebsockets must drive the wait while one of its connections exists (only it knows what
+ * they wait for); otherwise zmq_poll alone is cheaper. */
+static bool lws_in_use(const ubii_linux_port *port)
+{
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        if (uses_lws(&port->channels[i])) {
+            return true;
+        }
+    }
+    return port->lws_connections > 0;
+}
+
 static ubii_status wait_for_io(void *context, int timeout_ms)
 {
     ubii_linux_port *port = context;
-    if (port->lws != NULL) {
+    if (port->lws != NULL && lws_in_use(port)) {
         ubii__lws_service(port, zmq_message_waiting(port) ? 0 : timeout_ms);
         return UBII_OK;
     }

@@ -84,6 +84,7 @@ struct ubii_linux_port {
     struct lws_context *lws; /* created on the first WebSocket or HTTP channel */
     struct lws_vhost *vhost;
     zmq_wakeup *wakeups[MAX_ZMQ_WAKEUPS];
+    int lws_connections; /* live WebSocket/HTTP connections, closing ones included */
     char last_error[256];
 };
 

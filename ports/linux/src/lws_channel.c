@@ -26,7 +26,8 @@ enum {
 };
 
 typedef struct lws_connection {
-    ubii_linux_port *port; /* NULL once the channel has let go of it */
+    ubii_linux_port *port;  /* NULL once the channel has let go of it */
+    ubii_linux_port *owner; /* the port, always: counts its live connections */
     ubii_channel which;
     struct lws *wsi;
     bool http;
@@ -428,6 +429,7 @@ static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void 
                 lose(connection, "WebSocket connection ended", NULL);
             }
         }
+        connection->owner->lws_connections--;
         detach(connection);
         free(connection);
         lws_set_opaque_user_data(wsi, NULL);
@@ -453,7 +455,9 @@ static ubii_status connect_websocket(ubii_linux_port *port, ubii_channel which,
         return UBII_ERR_TRANSPORT;
     }
     connection->port = port;
+    connection->owner = port;
     connection->which = which;
+    port->lws_connections++;
 
     struct lws_client_connect_info info;
     memset(&info, 0, sizeof info);
@@ -478,6 +482,7 @@ static ubii_status connect_websocket(ubii_linux_port *port, ubii_channel which,
     if (connection->wsi == NULL && ch->connection == connection) {
         /* Failed at once (lws may already have reported it and freed nothing). */
         ch->connection = NULL;
+        port->lws_connections--;
         free(connection);
         port->channels[which].state = UBII_CHANNEL_LOST;
         set_error(port, "WebSocket connection could not be started", NULL);
@@ -569,6 +574,7 @@ static int on_http(struct lws *wsi, enum lws_callback_reasons reason, void *user
         if (ch != NULL && ch->connection == connection) {
             ch->connection = NULL;
         }
+        connection->owner->lws_connections--;
         detach(connection);
         free(connection);
         lws_set_opaque_user_data(wsi, NULL);
@@ -588,8 +594,10 @@ static ubii_status post_request(ubii_linux_port *port, ubii_channel which, queue
         return UBII_ERR_TRANSPORT;
     }
     connection->port = port;
+    connection->owner = port;
     connection->which = which;
     connection->http = true;
+    port->lws_connections++;
     /* The message was allocated with LWS_PRE bytes of headroom; keep that layout. */
     connection->request = malloc(LWS_PRE + body->size);
     if (connection->request == NULL) {
@@ -622,6 +630,7 @@ static ubii_status post_request(ubii_linux_port *port, ubii_channel which, queue
     connection->wsi = lws_client_connect_via_info(&info);
     if (connection->wsi == NULL && ch->connection == connection) {
         ch->connection = NULL;
+        port->lws_connections--;
         detach(connection);
         free(connection);
         port->channels[which].state = UBII_CHANNEL_LOST;
