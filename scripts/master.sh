@@ -9,6 +9,8 @@
 #
 # The package comes from scripts/npm-packages.sh (UBII_CACHE_DIR). A master that does not report
 # ready within UBII_MASTER_START_TIMEOUT seconds (default 20) is killed and its log printed.
+# UBII_MASTER_TLS=1 serves WebSocket and HTTP over TLS (wss://, https://) with a self-signed
+# certificate made in STATE_DIR.
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
@@ -26,12 +28,19 @@ prepare() {
     exit 1
   fi
   mkdir -p "$state/home"
+  local https='"enabled": false'
+  if [ "${UBII_MASTER_TLS:-0}" = 1 ]; then
+    openssl req -x509 -newkey rsa:2048 -nodes -days 2 -subj /CN=127.0.0.1 \
+      -keyout "$state/key.pem" -out "$state/cert.pem" >/dev/null 2>&1
+    openssl rsa -in "$state/key.pem" -pubout -out "$state/public.pem" >/dev/null 2>&1
+    https="\"enabled\": true, \"pathCert\": \"$state/cert.pem\", \"pathPrivateKey\": \"$state/key.pem\", \"pathPublicKey\": \"$state/public.pem\""
+  fi
   # https.enabled must be given: the master treats a missing key as true.
   cat > "$state/config.json" <<JSON
 { "ports": { "serviceZMQ": $base, "serviceREST": $((base + 1)),
              "topicdataZMQ": $((base + 2)), "topicdataWS": $((base + 3)) },
   "ipc": { "ipcEndpointTopicData": "/ubii-ipc-topicdata" },
-  "https": { "enabled": false, "allowedOrigins": [] } }
+  "https": { $https, "allowedOrigins": [] } }
 JSON
 }
 

@@ -23,6 +23,11 @@ uint64_t ubii__now(ubii_node *node)
     return node->port.vtable->monotonic_ms(node->port.context);
 }
 
+size_t ubii_node_size(void)
+{
+    return sizeof(ubii_node);
+}
+
 void ubii_config_init(ubii_config *config)
 {
     if (config == NULL) {

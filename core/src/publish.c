@@ -176,6 +176,55 @@ ubii_status ubii_publish_message(ubii_node *node, const char *topic, ubii_record
     return publish(node, topic, (uint32_t)type, write_message, &value);
 }
 
+ubii_status ubii_publish_vector2(ubii_node *node, const char *topic,
+                                 const ubii_dataStructure_Vector2 *value)
+{
+    return ubii_publish_message(node, topic, UBII_RECORD_VECTOR2, ubii_dataStructure_Vector2_fields,
+                                value);
+}
+
+ubii_status ubii_publish_vector3(ubii_node *node, const char *topic,
+                                 const ubii_dataStructure_Vector3 *value)
+{
+    return ubii_publish_message(node, topic, UBII_RECORD_VECTOR3, ubii_dataStructure_Vector3_fields,
+                                value);
+}
+
+ubii_status ubii_publish_vector4(ubii_node *node, const char *topic,
+                                 const ubii_dataStructure_Vector4 *value)
+{
+    return ubii_publish_message(node, topic, UBII_RECORD_VECTOR4, ubii_dataStructure_Vector4_fields,
+                                value);
+}
+
+ubii_status ubii_publish_quaternion(ubii_node *node, const char *topic,
+                                    const ubii_dataStructure_Quaternion *value)
+{
+    return ubii_publish_message(node, topic, UBII_RECORD_QUATERNION,
+                                ubii_dataStructure_Quaternion_fields, value);
+}
+
+ubii_status ubii_publish_color(ubii_node *node, const char *topic,
+                               const ubii_dataStructure_Color *value)
+{
+    return ubii_publish_message(node, topic, UBII_RECORD_COLOR, ubii_dataStructure_Color_fields,
+                                value);
+}
+
+ubii_status ubii_publish_pose2d(ubii_node *node, const char *topic,
+                                const ubii_dataStructure_Pose2D *value)
+{
+    return ubii_publish_message(node, topic, UBII_RECORD_POSE2D, ubii_dataStructure_Pose2D_fields,
+                                value);
+}
+
+ubii_status ubii_publish_pose3d(ubii_node *node, const char *topic,
+                                const ubii_dataStructure_Pose3D *value)
+{
+    return ubii_publish_message(node, topic, UBII_RECORD_POSE3D, ubii_dataStructure_Pose3D_fields,
+                                value);
+}
+
 /* A list message's body, written by `write_body` into a sizing stream first to learn its length. */
 typedef bool (*body_writer)(pb_ostream_t *stream, const void *value);
 

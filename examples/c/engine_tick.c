@@ -91,8 +91,7 @@ int main(int argc, char **argv)
             pose.position.y = sin(t);
             pose.which_orientation = ubii_dataStructure_Pose3D_euler_tag;
             pose.orientation.euler.z = t;
-            if (ubii_publish_message(&node, "/libubii/example/engine/pose", UBII_RECORD_POSE3D,
-                                     ubii_dataStructure_Pose3D_fields, &pose) == UBII_OK) {
+            if (ubii_publish_pose3d(&node, "/libubii/example/engine/pose", &pose) == UBII_OK) {
                 published++;
             }
         }

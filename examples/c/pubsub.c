@@ -15,8 +15,9 @@
 #include "ubii/port_linux.h"
 #include "ubii/ubii.h"
 
-static const char counter_topic[] = "/libubii/example/counter";
-static const char vector_topic[] = "/libubii/example/vector";
+/* Topics are scoped by the publisher's client id, so that runs side by side do not mix. */
+static char counter_topic[128];
+static char vector_topic[128];
 
 static double seconds_now(void)
 {
@@ -110,8 +111,7 @@ int main(int argc, char **argv)
         double phase = (seconds_now() - start) * 2.0;
         ubii_dataStructure_Vector3 vector = {cos(phase), sin(phase), phase};
         if (ubii_publish_int32(&publisher, counter_topic, sent) == UBII_OK &&
-            ubii_publish_message(&publisher, vector_topic, UBII_RECORD_VECTOR3,
-                                 ubii_dataStructure_Vector3_fields, &vector) == UBII_OK) {
+            ubii_publish_vector3(&publisher, vector_topic, &vector) == UBII_OK) {
             sent += 2;
         }
         pump(&publisher, &subscriber, 0.25, NULL);

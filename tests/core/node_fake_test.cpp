@@ -404,3 +404,27 @@ TEST_F(NodeWithFakeMaster, PublishedRecordsCarryTopicTimestampAndValue)
 }
 
 } // namespace
+
+namespace
+{
+
+TEST_F(NodeWithFakeMaster, TypedHelpersEncodeLikeTheGenericMessagePublish)
+{
+    start_ready();
+    ubii_dataStructure_Pose3D pose = ubii_dataStructure_Pose3D_init_zero;
+    pose.has_position = true;
+    pose.position.x = 1;
+    pose.which_orientation = ubii_dataStructure_Pose3D_euler_tag;
+    pose.orientation.euler.z = 2;
+    ASSERT_EQ(ubii_publish_pose3d(&node, "/p", &pose), UBII_OK);
+    ASSERT_EQ(ubii_publish_message(&node, "/p", UBII_RECORD_POSE3D,
+                                   ubii_dataStructure_Pose3D_fields, &pose),
+              UBII_OK);
+    ubii_dataStructure_Color color = {0.1, 0.2, 0.3, 1.0};
+    ASSERT_EQ(ubii_publish_color(&node, "/c", &color), UBII_OK);
+    ASSERT_EQ(fake.topic_sent.size(), 3u);
+    EXPECT_EQ(fake.topic_sent[0].bytes, fake.topic_sent[1].bytes);
+    EXPECT_EQ(ubii_node_size(), sizeof(ubii_node));
+}
+
+} // namespace

@@ -35,7 +35,7 @@ class TestNode
 {
   public:
     explicit TestNode(const std::string &name, const std::string &topic_url = topic_zmq_url(),
-                      const std::string &service = service_url());
+                      const std::string &service = service_url(), bool allow_self_signed = false);
     ~TestNode();
     TestNode(const TestNode &) = delete;
     TestNode &operator=(const TestNode &) = delete;
@@ -43,6 +43,10 @@ class TestNode
     ubii_node *get()
     {
         return node_.get();
+    }
+    const char *transport_error() const
+    {
+        return ubii_linux_port_last_error(port_);
     }
     ubii_config &config()
     {

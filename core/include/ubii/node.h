@@ -89,6 +89,10 @@ typedef struct ubii_stats {
     uint64_t reconnects;
 } ubii_stats;
 
+/* sizeof(ubii_node) as this library was built, for callers that cannot evaluate sizeof (e.g. a
+ * C# binding allocating unmanaged memory); pass it as ubii_node_init's node_size. */
+UBII_API size_t ubii_node_size(void);
+
 /* Fills `config` with the defaults above (URLs NULL). */
 UBII_API void ubii_config_init(ubii_config *config);
 

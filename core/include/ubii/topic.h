@@ -21,7 +21,14 @@
 #include "ubii/export.h"
 #include "ubii/node.h"
 #include "ubii/status.h"
+#include "ubii/dataStructure/color.pb.h"
 #include "ubii/dataStructure/image.pb.h"
+#include "ubii/dataStructure/pose2d.pb.h"
+#include "ubii/dataStructure/pose3d.pb.h"
+#include "ubii/dataStructure/quaternion.pb.h"
+#include "ubii/dataStructure/vector2.pb.h"
+#include "ubii/dataStructure/vector3.pb.h"
+#include "ubii/dataStructure/vector4.pb.h"
 #include "ubii/topicData/topicDataRecord.pb.h"
 
 #ifdef __cplusplus
@@ -179,6 +186,21 @@ UBII_API ubii_status ubii_publish_image(ubii_node *node, const char *topic, int3
                                         int32_t height,
                                         ubii_dataStructure_Image2D_DataFormat format,
                                         const uint8_t *data, size_t size);
+/* The common geometric types; the values are copied at once. */
+UBII_API ubii_status ubii_publish_vector2(ubii_node *node, const char *topic,
+                                          const ubii_dataStructure_Vector2 *value);
+UBII_API ubii_status ubii_publish_vector3(ubii_node *node, const char *topic,
+                                          const ubii_dataStructure_Vector3 *value);
+UBII_API ubii_status ubii_publish_vector4(ubii_node *node, const char *topic,
+                                          const ubii_dataStructure_Vector4 *value);
+UBII_API ubii_status ubii_publish_quaternion(ubii_node *node, const char *topic,
+                                             const ubii_dataStructure_Quaternion *value);
+UBII_API ubii_status ubii_publish_color(ubii_node *node, const char *topic,
+                                        const ubii_dataStructure_Color *value);
+UBII_API ubii_status ubii_publish_pose2d(ubii_node *node, const char *topic,
+                                         const ubii_dataStructure_Pose2D *value);
+UBII_API ubii_status ubii_publish_pose3d(ubii_node *node, const char *topic,
+                                         const ubii_dataStructure_Pose3D *value);
 /* Any message-typed member: `message` is the nanopb struct `fields` describes, e.g.
  * ubii_publish_message(node, "/pose", UBII_RECORD_POSE3D, ubii_dataStructure_Pose3D_fields, &pose).
  */

@@ -1,0 +1,48 @@
+// WebSocket topic data over TLS (wss://) against a master serving a self-signed certificate (the
+// `master_tls` fixture): accepted when the application allows self-signed certificates, refused
+// (and reported, not hung on) when it does not.
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "test_node.h"
+
+using ubii_test::TestNode;
+using ubii_test::unique_topic;
+
+namespace
+{
+
+const int tls_port_base = 8301;
+const std::string service = "tcp://127.0.0.1:" + std::to_string(tls_port_base);
+const std::string secure_topics = "wss://127.0.0.1:" + std::to_string(tls_port_base + 3);
+
+TEST(Tls, SecureWebSocketCarriesRecordsWhenSelfSignedIsAllowed)
+{
+    TestNode node("tls-test", secure_topics, service, true);
+    ASSERT_TRUE(node.wait_ready()) << node.transport_error();
+    const std::string topic = unique_topic("/tls");
+    node.collect(topic);
+    ASSERT_TRUE(node.poll_until([&] {
+        ubii_publish_string(node.get(), topic.c_str(), "secret", 6);
+        return !node.received().empty();
+    }));
+    EXPECT_EQ(
+        std::string(node.received().front().value.begin(), node.received().front().value.end()),
+        "secret");
+}
+
+TEST(Tls, UntrustedCertificateIsRefusedAndReported)
+{
+    TestNode node("tls-refused", secure_topics, service, false);
+    node.config().max_reconnect_attempts = 1;
+    node.config().reconnect_min_ms = 50;
+    ASSERT_TRUE(node.poll_until([] { return true; }));
+    ASSERT_EQ(node.start(), UBII_OK);
+    ASSERT_TRUE(node.poll_until([&] { return ubii_node_state(node.get()) == UBII_STATE_FAILED; },
+                                std::chrono::seconds(10)));
+    EXPECT_NE(std::string(node.transport_error()).find("WebSocket"), std::string::npos)
+        << node.transport_error();
+}
+
+} // namespace
