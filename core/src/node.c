@@ -200,23 +200,33 @@ static void finish_stop(ubii_node *node)
     ubii__set_state(node, UBII_STATE_STOPPED, UBII_OK);
 }
 
+/* Gives up for good: everything closed, FAILED. */
+static void fail(ubii_node *node, ubii_status reason)
+{
+    ubii__cancel_calls(node, UBII_ERR_CANCELLED);
+    close_channels(node);
+    ubii__subscriptions_reset_master(node);
+    node->client_id[0] = '\0';
+    ubii__set_state(node, UBII_STATE_FAILED, reason);
+}
+
 void ubii__connection_lost(ubii_node *node, ubii_status reason)
 {
     if (node->state == UBII_STATE_STOPPING) {
         finish_stop(node);
         return;
     }
-    ubii__cancel_calls(node, UBII_ERR_CANCELLED);
-    close_channels(node);
-    ubii__subscriptions_reset_master(node);
-    node->client_id[0] = '\0';
     node->reconnect_attempts++;
     node->stats.reconnects++;
     if (node->config.max_reconnect_attempts != 0 &&
         node->reconnect_attempts > node->config.max_reconnect_attempts) {
-        ubii__set_state(node, UBII_STATE_FAILED, reason);
+        fail(node, reason);
         return;
     }
+    ubii__cancel_calls(node, UBII_ERR_CANCELLED);
+    close_channels(node);
+    ubii__subscriptions_reset_master(node);
+    node->client_id[0] = '\0';
     node->retry_at_ms = ubii__now(node) + backoff_ms(node);
     ubii__set_state(node, UBII_STATE_RECONNECTING, reason);
 }
@@ -283,6 +293,12 @@ static void on_registration(ubii_node *node, const ubii_reply *reply)
     ubii__copy_string(node->client_id, sizeof node->client_id, client.id);
     status = node->port.vtable->open(node->port.context, UBII_CHANNEL_TOPIC, node->topic_url,
                                      node->client_id);
+    if (status == UBII_ERR_UNSUPPORTED || status == UBII_ERR_INVALID_ARGUMENT) {
+        /* A topic URL the port cannot serve: a configuration error that no retry mends. */
+        ubii__report(node, status, "the port cannot open the topic data URL");
+        fail(node, status);
+        return;
+    }
     if (status != UBII_OK) {
         ubii__report(node, status, "cannot open the topic data connection");
         ubii__connection_lost(node, status);

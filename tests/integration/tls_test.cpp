@@ -1,6 +1,7 @@
 // WebSocket topic data over TLS (wss://) against a master serving a self-signed certificate (the
 // `master_tls` fixture): accepted when the application allows self-signed certificates, refused
 // (and reported, not hung on) when it does not.
+#include <algorithm>
 #include <cstring>
 
 #include <gtest/gtest.h>
@@ -8,6 +9,7 @@
 #include "test_node.h"
 
 using ubii_test::TestNode;
+using ubii_test::Tls;
 using ubii_test::unique_topic;
 
 namespace
@@ -19,7 +21,7 @@ const std::string secure_topics = "wss://127.0.0.1:" + std::to_string(tls_port_b
 
 TEST(Tls, SecureWebSocketCarriesRecordsWhenSelfSignedIsAllowed)
 {
-    TestNode node("tls-test", secure_topics, service, true);
+    TestNode node("tls-test", secure_topics, service, Tls::allow_self_signed);
     ASSERT_TRUE(node.wait_ready()) << node.transport_error();
     const std::string topic = unique_topic("/tls");
     node.collect(topic);
@@ -34,7 +36,7 @@ TEST(Tls, SecureWebSocketCarriesRecordsWhenSelfSignedIsAllowed)
 
 TEST(Tls, UntrustedCertificateIsRefusedAndReported)
 {
-    TestNode node("tls-refused", secure_topics, service, false);
+    TestNode node("tls-refused", secure_topics, service, Tls::strict);
     node.config().max_reconnect_attempts = 1;
     node.config().reconnect_min_ms = 50;
     ASSERT_TRUE(node.poll_until([] { return true; }));
@@ -43,6 +45,19 @@ TEST(Tls, UntrustedCertificateIsRefusedAndReported)
                                 std::chrono::seconds(10)));
     EXPECT_NE(std::string(node.transport_error()).find("WebSocket"), std::string::npos)
         << node.transport_error();
+}
+
+TEST(Tls, SecureUrlOnAPortWithoutTlsIsAConfigurationError)
+{
+    TestNode node("tls-not-enabled", secure_topics, service, Tls::off);
+    ASSERT_TRUE(node.poll_until([] { return true; }));
+    ASSERT_EQ(node.start(), UBII_OK);
+    ASSERT_TRUE(node.poll_until([&] { return ubii_node_state(node.get()) == UBII_STATE_FAILED; },
+                                std::chrono::seconds(10)));
+    EXPECT_NE(std::string(node.transport_error()).find("enable_tls"), std::string::npos)
+        << node.transport_error();
+    // Retrying cannot help: it fails once, without reconnecting.
+    EXPECT_EQ(std::count(node.states().begin(), node.states().end(), UBII_STATE_RECONNECTING), 0);
 }
 
 } // namespace

@@ -36,7 +36,7 @@ std::string unique_topic(const std::string &stem)
 }
 
 TestNode::TestNode(const std::string &name, const std::string &topic_url,
-                   const std::string &service, bool allow_self_signed)
+                   const std::string &service, Tls tls)
     : name_(name), topic_url_(topic_url), service_url_(service),
       node_(std::make_unique<ubii_node>())
 {
@@ -50,8 +50,9 @@ TestNode::TestNode(const std::string &name, const std::string &topic_url,
     config_.on_state = on_state;
     config_.on_state_user = this;
     ubii_linux_port_options options{};
-    options.libwebsockets_log_level = 1; // LLL_ERR: no notice per HTTP transaction
-    options.allow_self_signed = allow_self_signed;
+    options.libwebsockets_log_level = 1;  // LLL_ERR: no notice per HTTP transaction
+    options.enable_tls = tls != Tls::off; // only the TLS tests need it
+    options.allow_self_signed = tls == Tls::allow_self_signed;
     if (ubii_linux_port_create(&port_, &options) != UBII_OK) {
         throw std::runtime_error("cannot create the Linux port");
     }

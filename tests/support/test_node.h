@@ -31,11 +31,14 @@ struct Received {
     int64_t millis;
 };
 
+// How the node's port handles wss:// and https://.
+enum class Tls { off, strict, allow_self_signed };
+
 class TestNode
 {
   public:
     explicit TestNode(const std::string &name, const std::string &topic_url = topic_zmq_url(),
-                      const std::string &service = service_url(), bool allow_self_signed = false);
+                      const std::string &service = service_url(), Tls tls = Tls::off);
     ~TestNode();
     TestNode(const TestNode &) = delete;
     TestNode &operator=(const TestNode &) = delete;

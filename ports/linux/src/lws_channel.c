@@ -203,7 +203,8 @@ bool ubii__lws_start(ubii_linux_port *port)
     memset(&info, 0, sizeof info);
     info.port = CONTEXT_PORT_NO_LISTEN;
     info.protocols = protocols;
-    info.options = LWS_SERVER_OPTION_DO_SSL_GLOBAL_INIT;
+    /* TLS needs lws's OpenSSL set-up, which is process-wide: see enable_tls in port_linux.h. */
+    info.options = port->options.enable_tls ? LWS_SERVER_OPTION_DO_SSL_GLOBAL_INIT : 0;
     info.gid = -1;
     info.uid = -1;
     info.user = port;
@@ -654,6 +655,10 @@ ubii_status ubii__lws_open(ubii_linux_port *port, ubii_channel which, const char
     }
     if (websocket != (which == UBII_CHANNEL_TOPIC)) {
         return UBII_ERR_UNSUPPORTED; /* topic data over WebSocket, services over HTTP */
+    }
+    if (ch->tls && !port->options.enable_tls) {
+        set_error(port, "TLS URL on a port created without enable_tls", url);
+        return UBII_ERR_UNSUPPORTED;
     }
     if (port->lws == NULL) {
         return port->options.zmq_only ? UBII_ERR_UNSUPPORTED : UBII_ERR_TRANSPORT;

@@ -30,14 +30,19 @@ typedef struct ubii_linux_port ubii_linux_port;
 typedef struct ubii_linux_port_options {
     /* Largest message accepted from the master; a larger one drops the connection. 0: 16 MiB. */
     size_t max_message_size;
-    /* TLS (wss://, https://): accept self-signed certificates, e.g. a master's own. */
+    /* TLS (wss://, https://) needs this set; without it such URLs give UBII_ERR_UNSUPPORTED. It
+     * makes port creation load OpenSSL's certificate store (about 40 ms). libwebsockets 4.1 sets
+     * OpenSSL up process-wide: keep to one TLS port per process (a second one, destroyed while
+     * the first lives, leaks OpenSSL's store; LeakSanitizer shows it). */
+    bool enable_tls;
+    /* TLS: accept self-signed certificates, e.g. a master's own. */
     bool allow_self_signed;
     /* If not 0, passed to lws_set_log_level() (process-wide) before libwebsockets starts, e.g.
      * LLL_ERR (1) to keep its notices off stderr. */
     int libwebsockets_log_level;
     /* Only tcp:// (ZMQ) URLs: libwebsockets is never started, ws:// and http:// give
-     * UBII_ERR_UNSUPPORTED. Otherwise libwebsockets starts in ubii_linux_port_create (about 40 ms
-     * for its TLS set-up), so that no ubii_node_poll() ever pays for it. */
+     * UBII_ERR_UNSUPPORTED. Otherwise libwebsockets starts in ubii_linux_port_create, so that no
+     * ubii_node_poll() ever pays for it. */
     bool zmq_only;
 } ubii_linux_port_options;
 
