@@ -93,9 +93,6 @@ int main(int argc, char **argv)
     config.on_error_user = "subscriber";
     ubii_node_init(&subscriber, sizeof subscriber, &config, ubii_linux_port_get(subscriber_port));
 
-    int received = 0;
-    ubii_subscribe(&subscriber, counter_topic, on_record, &received, NULL);
-    ubii_subscribe_regex(&subscriber, "^/libubii/example/vec", on_record, &received, NULL);
     if (ubii_node_start(&publisher) != UBII_OK || ubii_node_start(&subscriber) != UBII_OK ||
         !pump(&publisher, &subscriber, 10.0, both_ready)) {
         fprintf(stderr, "pubsub: could not connect to %s / %s\n", args.service_url, args.topic_url);
@@ -103,6 +100,21 @@ int main(int argc, char **argv)
     }
     printf("publisher %s and subscriber %s are connected\n", ubii_node_client_id(&publisher),
            ubii_node_client_id(&subscriber));
+
+    const char *id = ubii_node_client_id(&publisher);
+    char vector_regex[160];
+    snprintf(counter_topic, sizeof counter_topic, "/%s/example/counter", id);
+    snprintf(vector_topic, sizeof vector_topic, "/%s/example/vector", id);
+    snprintf(vector_regex, sizeof vector_regex, "^/%s/example/vec", id);
+    int received = 0;
+    ubii_status status = ubii_subscribe(&subscriber, counter_topic, on_record, &received, NULL);
+    if (status == UBII_OK) {
+        status = ubii_subscribe_regex(&subscriber, vector_regex, on_record, &received, NULL);
+    }
+    if (status != UBII_OK) {
+        fprintf(stderr, "pubsub: subscribing failed: %s\n", ubii_strerror(status));
+        return 1;
+    }
     pump(&publisher, &subscriber, 0.3, NULL); /* let the subscriptions reach the master */
 
     double start = seconds_now();
@@ -110,10 +122,15 @@ int main(int argc, char **argv)
     while (seconds_now() - start < args.seconds) {
         double phase = (seconds_now() - start) * 2.0;
         ubii_dataStructure_Vector3 vector = {cos(phase), sin(phase), phase};
-        if (ubii_publish_int32(&publisher, counter_topic, sent) == UBII_OK &&
-            ubii_publish_vector3(&publisher, vector_topic, &vector) == UBII_OK) {
-            sent += 2;
+        status = ubii_publish_int32(&publisher, counter_topic, sent);
+        if (status == UBII_OK) {
+            status = ubii_publish_vector3(&publisher, vector_topic, &vector);
         }
+        if (status != UBII_OK) {
+            fprintf(stderr, "pubsub: publishing failed: %s\n", ubii_strerror(status));
+            break;
+        }
+        sent += 2;
         pump(&publisher, &subscriber, 0.25, NULL);
     }
     pump(&publisher, &subscriber, 0.3, NULL);
@@ -123,5 +140,5 @@ int main(int argc, char **argv)
     ubii_node_stop_wait(&subscriber, 2000);
     ubii_linux_port_destroy(publisher_port);
     ubii_linux_port_destroy(subscriber_port);
-    return received == sent ? 0 : 1;
+    return sent > 0 && received == sent ? 0 : 1;
 }
