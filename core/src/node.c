@@ -390,17 +390,26 @@ static void answer_ping(ubii_node *node, unsigned flags)
     node->stats.pings++;
 }
 
+static bool topic_channel_in_use(const ubii_node *node)
+{
+    return node->state == UBII_STATE_OPENING || node->state == UBII_STATE_READY ||
+           node->state == UBII_STATE_STOPPING;
+}
+
+/* Drains the topic channel whenever it is open, so nothing piles up in the port: PINGs are
+ * answered in every such state, records are passed on only when READY (before, no subscription
+ * is confirmed; while stopping, the application has asked to hear no more). */
 static void receive_topic_data(ubii_node *node)
 {
     const uint8_t *data;
     size_t size;
     unsigned flags;
-    while (node->state == UBII_STATE_READY &&
+    while (topic_channel_in_use(node) &&
            node->port.vtable->receive(node->port.context, UBII_CHANNEL_TOPIC, &data, &size,
                                       &flags) == UBII_OK) {
         if (size == UBII__KEEPALIVE_SIZE && memcmp(data, UBII__PING, UBII__KEEPALIVE_SIZE) == 0) {
             answer_ping(node, flags);
-        } else {
+        } else if (node->state == UBII_STATE_READY) {
             ubii__handle_topic_data(node, data, size);
         }
     }

@@ -428,3 +428,30 @@ TEST_F(NodeWithFakeMaster, TypedHelpersEncodeLikeTheGenericMessagePublish)
 }
 
 } // namespace
+
+namespace
+{
+
+TEST_F(NodeWithFakeMaster, WhileStoppingPingsAreAnsweredAndRecordsNotPassedOn)
+{
+    start_ready();
+    Counter counter;
+    ASSERT_EQ(ubii_subscribe(&node, "/a", Counter::on_record, &counter, nullptr), UBII_OK);
+    poll(3);
+    // The deregistration goes unanswered for a while: the node stays STOPPING.
+    fake.answer = [](const ubii_services_ServiceRequest &) { return std::nullopt; };
+    ASSERT_EQ(ubii_node_stop(&node), UBII_OK);
+    poll(1);
+    ASSERT_EQ(ubii_node_state(&node), UBII_STATE_STOPPING);
+    size_t sent_before = fake.topic_sent.size();
+    fake.push_topic(double_record("/a", 1.0));
+    fake.push_topic({'P', 'I', 'N', 'G'}, UBII_MESSAGE_TEXT);
+    poll(1);
+    EXPECT_EQ(counter.count, 0);
+    ASSERT_EQ(fake.topic_sent.size(), sent_before + 1);
+    EXPECT_EQ(fake.topic_sent.back().bytes, (std::vector<uint8_t>{'P', 'O', 'N', 'G'}));
+    advance(1100); // the deregistration times out; the node stops anyway
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_STOPPED);
+}
+
+} // namespace

@@ -67,12 +67,7 @@ TEST(HttpServicesOnOldMaster, NotFoundIsATransportFailureNotAHang)
     const std::string url =
         "http://127.0.0.1:" + std::to_string(ubii_test::port_base() + 1) + "/services/binary";
     TestNode node("http-404", ubii_test::topic_zmq_url(), url);
-    node.config().max_reconnect_attempts = 1;
-    node.config().reconnect_min_ms = 50;
-    ASSERT_TRUE(node.poll_until([] { return true; }));
-    ASSERT_EQ(node.start(), UBII_OK);
-    ASSERT_TRUE(node.poll_until([&] { return ubii_node_state(node.get()) == UBII_STATE_FAILED; },
-                                std::chrono::seconds(10)));
+    ASSERT_TRUE(node.start_and_wait_failed(1, std::chrono::seconds(10)));
     EXPECT_EQ(node.states().at(1), UBII_STATE_RECONNECTING);
 }
 

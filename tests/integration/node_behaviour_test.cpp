@@ -311,12 +311,7 @@ TEST(Arguments, NoMasterMeansReconnectingNotAHang)
 {
     TestNode node("no-master-test", "tcp://127.0.0.1:9", "tcp://127.0.0.1:9");
     node.config().service_timeout_ms = 300;
-    node.config().max_reconnect_attempts = 2;
-    node.config().reconnect_min_ms = 50;
-    ASSERT_TRUE(node.poll_until([] { return true; }));
-    ASSERT_EQ(node.start(), UBII_OK);
-    ASSERT_TRUE(node.poll_until([&] { return ubii_node_state(node.get()) == UBII_STATE_FAILED; },
-                                std::chrono::seconds(5)));
+    ASSERT_TRUE(node.start_and_wait_failed(2, std::chrono::seconds(5)));
     std::vector<ubii_state> expected = {UBII_STATE_CONNECTING, UBII_STATE_RECONNECTING,
                                         UBII_STATE_CONNECTING, UBII_STATE_RECONNECTING,
                                         UBII_STATE_CONNECTING, UBII_STATE_FAILED};

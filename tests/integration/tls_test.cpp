@@ -37,12 +37,7 @@ TEST(Tls, SecureWebSocketCarriesRecordsWhenSelfSignedIsAllowed)
 TEST(Tls, UntrustedCertificateIsRefusedAndReported)
 {
     TestNode node("tls-refused", secure_topics, service, Tls::strict);
-    node.config().max_reconnect_attempts = 1;
-    node.config().reconnect_min_ms = 50;
-    ASSERT_TRUE(node.poll_until([] { return true; }));
-    ASSERT_EQ(node.start(), UBII_OK);
-    ASSERT_TRUE(node.poll_until([&] { return ubii_node_state(node.get()) == UBII_STATE_FAILED; },
-                                std::chrono::seconds(10)));
+    ASSERT_TRUE(node.start_and_wait_failed(1, std::chrono::seconds(10)));
     EXPECT_NE(std::string(node.transport_error()).find("WebSocket"), std::string::npos)
         << node.transport_error();
 }
@@ -50,10 +45,7 @@ TEST(Tls, UntrustedCertificateIsRefusedAndReported)
 TEST(Tls, SecureUrlOnAPortWithoutTlsIsAConfigurationError)
 {
     TestNode node("tls-not-enabled", secure_topics, service, Tls::off);
-    ASSERT_TRUE(node.poll_until([] { return true; }));
-    ASSERT_EQ(node.start(), UBII_OK);
-    ASSERT_TRUE(node.poll_until([&] { return ubii_node_state(node.get()) == UBII_STATE_FAILED; },
-                                std::chrono::seconds(10)));
+    ASSERT_TRUE(node.start_and_wait_failed(5));
     EXPECT_NE(std::string(node.transport_error()).find("enable_tls"), std::string::npos)
         << node.transport_error();
     // Retrying cannot help: it fails once, without reconnecting.

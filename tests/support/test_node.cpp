@@ -96,6 +96,17 @@ bool TestNode::wait_ready(std::chrono::milliseconds timeout)
     return poll_until([this] { return ubii_node_state(node_.get()) == UBII_STATE_READY; }, timeout);
 }
 
+bool TestNode::start_and_wait_failed(uint32_t attempts, std::chrono::milliseconds timeout)
+{
+    config_.max_reconnect_attempts = attempts;
+    config_.reconnect_min_ms = 50;
+    if (!poll_until([] { return true; }) || start() != UBII_OK) {
+        return false;
+    }
+    return poll_until([this] { return ubii_node_state(node_.get()) == UBII_STATE_FAILED; },
+                      timeout);
+}
+
 ubii_subscription TestNode::collect(const std::string &pattern, bool regex)
 {
     ubii_subscription handle = 0;

@@ -63,6 +63,10 @@ class TestNode
     bool poll_until(const std::function<bool()> &done,
                     std::chrono::milliseconds timeout = std::chrono::seconds(10));
     bool wait_ready(std::chrono::milliseconds timeout = std::chrono::seconds(10));
+    // Starts a node that cannot succeed and polls until it gives up (FAILED) after
+    // `attempts` reconnection attempts 50 ms apart; false if it does not within `timeout`.
+    bool start_and_wait_failed(uint32_t attempts,
+                               std::chrono::milliseconds timeout = std::chrono::seconds(10));
     // Subscribes, collecting every record into received(); regex when `regex`.
     ubii_subscription collect(const std::string &pattern, bool regex = false);
     std::vector<Received> &received()

@@ -48,7 +48,6 @@ typedef struct lws_channel {
     queued_message *taken; /* lent to the core until the next receive */
     message_queue outbox;  /* WebSocket: waiting for the socket to be writable */
     queued_message *reserved;
-    bool flow_paused;
 } lws_channel;
 
 /* A ZMQ fd adopted into libwebsockets, so that ZMQ traffic wakes lws_service(). */

@@ -21,7 +21,12 @@
 
 enum {
     RX_CHUNK = 64 * 1024,
-    INBOX_PAUSE_COUNT = 1024, /* stop reading the socket while this many messages wait */
+    /* Received messages waiting for the node, at most. The node drains the inbox at every poll,
+     * so this is only reached by an application that stops polling under a flood; the connection
+     * is then dropped (LOST, with a reason). Pausing the socket instead (lws_rx_flow_control)
+     * makes libwebsockets 4.1 spin in its forced-service loop on TLS connections. */
+    INBOX_LIMIT_COUNT = 16384,
+    INBOX_LIMIT_BYTES = 256 * 1024 * 1024,
     OUTBOX_LIMIT_COUNT = 4096
 };
 
@@ -356,9 +361,8 @@ static void deliver_assembled(lws_connection *connection, lws_channel *ch)
     message->flags = connection->assembly_flags;
     push(&ch->inbox, message);
     connection->assembled = 0;
-    if (ch->inbox.count >= INBOX_PAUSE_COUNT && !ch->flow_paused) {
-        lws_rx_flow_control(connection->wsi, 0);
-        ch->flow_paused = true;
+    if (ch->inbox.count > INBOX_LIMIT_COUNT || ch->inbox.bytes > INBOX_LIMIT_BYTES) {
+        lose(connection, "received messages piled up unread (is the node being polled?)", NULL);
     }
 }
 
@@ -441,6 +445,28 @@ static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void 
     return 0;
 }
 
+/* What both kinds of connection tell lws: where to, TLS, and the record to report to. */
+static void describe_connection(ubii_linux_port *port, const lws_channel *ch,
+                                lws_connection *connection, const char *path,
+                                struct lws_client_connect_info *info)
+{
+    memset(info, 0, sizeof *info);
+    info->context = port->lws;
+    info->address = ch->host;
+    info->port = ch->port;
+    info->path = path;
+    info->host = ch->host;
+    info->origin = ch->host;
+    info->opaque_user_data = connection;
+    if (ch->tls) {
+        info->ssl_connection = LCCSCF_USE_SSL;
+        if (port->options.allow_self_signed) {
+            info->ssl_connection |=
+                LCCSCF_ALLOW_SELFSIGNED | LCCSCF_SKIP_SERVER_CERT_HOSTNAME_CHECK;
+        }
+    }
+}
+
 static ubii_status connect_websocket(ubii_linux_port *port, ubii_channel which,
                                      const char *client_id)
 {
@@ -461,22 +487,9 @@ static ubii_status connect_websocket(ubii_linux_port *port, ubii_channel which,
     port->lws_connections++;
 
     struct lws_client_connect_info info;
-    memset(&info, 0, sizeof info);
-    info.context = port->lws;
-    info.address = ch->host;
-    info.port = ch->port;
-    info.path = path;
-    info.host = ch->host;
-    info.origin = ch->host;
+    describe_connection(port, ch, connection, path, &info);
     info.ietf_version_or_minus_one = -1;
     info.local_protocol_name = "ubii-ws"; /* no Sec-WebSocket-Protocol: the master offers none */
-    info.opaque_user_data = connection;
-    if (ch->tls) {
-        info.ssl_connection = LCCSCF_USE_SSL;
-        if (port->options.allow_self_signed) {
-            info.ssl_connection |= LCCSCF_ALLOW_SELFSIGNED | LCCSCF_SKIP_SERVER_CERT_HOSTNAME_CHECK;
-        }
-    }
     ch->connection = connection;
     port->channels[which].state = UBII_CHANNEL_CONNECTING;
     connection->wsi = lws_client_connect_via_info(&info);
@@ -611,22 +624,9 @@ static ubii_status post_request(ubii_linux_port *port, ubii_channel which, queue
     free(body);
 
     struct lws_client_connect_info info;
-    memset(&info, 0, sizeof info);
-    info.context = port->lws;
-    info.address = ch->host;
-    info.port = ch->port;
-    info.path = ch->path;
-    info.host = ch->host;
-    info.origin = ch->host;
+    describe_connection(port, ch, connection, ch->path, &info);
     info.method = "POST";
     info.local_protocol_name = "ubii-http";
-    info.opaque_user_data = connection;
-    if (ch->tls) {
-        info.ssl_connection = LCCSCF_USE_SSL;
-        if (port->options.allow_self_signed) {
-            info.ssl_connection |= LCCSCF_ALLOW_SELFSIGNED | LCCSCF_SKIP_SERVER_CERT_HOSTNAME_CHECK;
-        }
-    }
     ch->connection = connection;
     connection->wsi = lws_client_connect_via_info(&info);
     if (connection->wsi == NULL && ch->connection == connection) {
@@ -675,11 +675,15 @@ void ubii__lws_close(ubii_linux_port *port, ubii_channel which)
 {
     lws_channel *ch = &port->channels[which].lws;
     if (ch->connection != NULL) {
+        /* Killed at once, not at lws's next round: a TLS connection with buffered input would
+         * otherwise be serviced again and again for a channel that no longer takes it. The core
+         * never calls the port from inside an lws callback, so this is safe here. */
         lws_connection *connection = ch->connection;
+        struct lws *wsi = connection->wsi;
         ch->connection = NULL;
         detach(connection);
-        if (connection->wsi != NULL) {
-            lws_set_timeout(connection->wsi, PENDING_TIMEOUT_USER_OK, LWS_TO_KILL_ASYNC);
+        if (wsi != NULL) {
+            lws_set_timeout(wsi, PENDING_TIMEOUT_USER_OK, LWS_TO_KILL_SYNC); /* frees connection */
         }
     }
     clear(&ch->inbox);
@@ -739,11 +743,6 @@ ubii_status ubii__lws_receive(ubii_linux_port *port, ubii_channel which, const u
     lws_channel *ch = &port->channels[which].lws;
     free(ch->taken);
     ch->taken = pop(&ch->inbox);
-    if (ch->flow_paused && ch->inbox.count < INBOX_PAUSE_COUNT / 2 && ch->connection != NULL &&
-        ch->connection->wsi != NULL) {
-        lws_rx_flow_control(ch->connection->wsi, 1);
-        ch->flow_paused = false;
-    }
     if (ch->taken == NULL) {
         return UBII_ERR_WOULD_BLOCK;
     }
