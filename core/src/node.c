@@ -190,23 +190,27 @@ static uint64_t backoff_ms(const ubii_node *node)
     return wait < node->config.reconnect_max_ms ? wait : node->config.reconnect_max_ms;
 }
 
-static void finish_stop(ubii_node *node)
+/* Ends the current connection: pending calls cancelled, channels closed, the master's copy of
+ * the subscriptions forgotten (the application's stay), no client id. */
+static void tear_down(ubii_node *node)
 {
     ubii__cancel_calls(node, UBII_ERR_CANCELLED);
     close_channels(node);
     ubii__subscriptions_reset_master(node);
     node->client_id[0] = '\0';
+}
+
+static void finish_stop(ubii_node *node)
+{
+    tear_down(node);
     node->stop_requested = false;
     ubii__set_state(node, UBII_STATE_STOPPED, UBII_OK);
 }
 
-/* Gives up for good: everything closed, FAILED. */
+/* Gives up for good. */
 static void fail(ubii_node *node, ubii_status reason)
 {
-    ubii__cancel_calls(node, UBII_ERR_CANCELLED);
-    close_channels(node);
-    ubii__subscriptions_reset_master(node);
-    node->client_id[0] = '\0';
+    tear_down(node);
     ubii__set_state(node, UBII_STATE_FAILED, reason);
 }
 
@@ -223,10 +227,7 @@ void ubii__connection_lost(ubii_node *node, ubii_status reason)
         fail(node, reason);
         return;
     }
-    ubii__cancel_calls(node, UBII_ERR_CANCELLED);
-    close_channels(node);
-    ubii__subscriptions_reset_master(node);
-    node->client_id[0] = '\0';
+    tear_down(node);
     node->retry_at_ms = ubii__now(node) + backoff_ms(node);
     ubii__set_state(node, UBII_STATE_RECONNECTING, reason);
 }
