@@ -51,6 +51,11 @@ launch() {
   HOME="$state/home" PWD="$state" exec node --no-warnings "$here/master/launch-master.js" "$install_dir"
 }
 
+# True if PID is a master this script launched (not a reused process id).
+is_master() {
+  grep -q launch-master "/proc/$1/cmdline" 2>/dev/null
+}
+
 stop_pid() {
   local pid=$1
   kill -TERM "$pid" 2>/dev/null || return 0
@@ -66,7 +71,7 @@ case "${1:-}" in
   start)
     state=$(mkdir -p "${2:?$(usage)}" && cd "$2" && pwd)
     base=${3:-8101}
-    if [ -f "$state/master.pid" ] && kill -0 "$(cat "$state/master.pid")" 2>/dev/null; then
+    if [ -f "$state/master.pid" ] && is_master "$(cat "$state/master.pid")"; then
       echo "master.sh: a master is already running from $state (pid $(cat "$state/master.pid"))" >&2
       exit 1
     fi
@@ -99,7 +104,7 @@ case "${1:-}" in
     ;;
   stop)
     state=${2:?$(usage)}
-    if [ -f "$state/master.pid" ]; then
+    if [ -f "$state/master.pid" ] && is_master "$(cat "$state/master.pid")"; then
       stop_pid "$(cat "$state/master.pid")"
       rm -f "$state/master.pid"
       echo "master.sh: master stopped"

@@ -254,8 +254,15 @@ static void on_server_configuration(ubii_node *node, const ubii_reply *reply)
     ubii_servers_Server server = ubii_servers_Server_init_zero;
     ubii_status status = ubii_reply_decode(reply, ubii_services_ServiceReply_server_tag,
                                            ubii_servers_Server_fields, &server);
-    if (status != UBII_OK) {
+    if (status != UBII_OK && status != UBII_ERR_TOO_LARGE) {
         ubii__report(node, status, "server configuration failed");
+        ubii__connection_lost(node, status);
+        return;
+    }
+    if (status == UBII_ERR_TOO_LARGE && node->config.topic_url == NULL) {
+        /* A small port cannot take the configuration (its constants make it ~6.5 kB); only a
+         * configured topic URL lets the node go on without it. */
+        ubii__report(node, status, "server configuration too large for the port; set topic_url");
         ubii__connection_lost(node, status);
         return;
     }
@@ -405,10 +412,16 @@ static void receive_topic_data(ubii_node *node)
     const uint8_t *data;
     size_t size;
     unsigned flags;
+    ubii_status status;
     while (topic_channel_in_use(node) &&
-           node->port.vtable->receive(node->port.context, UBII_CHANNEL_TOPIC, &data, &size,
-                                      &flags) == UBII_OK) {
-        if (size == UBII__KEEPALIVE_SIZE && memcmp(data, UBII__PING, UBII__KEEPALIVE_SIZE) == 0) {
+           ((status = node->port.vtable->receive(node->port.context, UBII_CHANNEL_TOPIC, &data,
+                                                 &size, &flags)) == UBII_OK ||
+            status == UBII_ERR_TOO_LARGE)) {
+        if (status == UBII_ERR_TOO_LARGE) {
+            node->stats.decode_errors++;
+            ubii__report(node, status, "topic data over the port's size limit was dropped");
+        } else if (size == UBII__KEEPALIVE_SIZE &&
+                   memcmp(data, UBII__PING, UBII__KEEPALIVE_SIZE) == 0) {
             answer_ping(node, flags);
         } else if (node->state == UBII_STATE_READY) {
             ubii__handle_topic_data(node, data, size);

@@ -195,10 +195,18 @@ void ubii__service_step(ubii_node *node)
         unsigned flags;
         ubii_reply reply;
         ubii_general_Error error_storage;
-        if (node->port.vtable->receive(port, UBII_CHANNEL_SERVICE, &data, &size, &flags) ==
-            UBII_OK) {
-            ubii__parse_reply(data, size, &reply, &error_storage);
-            if (reply.status == UBII_ERR_DECODE) {
+        ubii_status received =
+            node->port.vtable->receive(port, UBII_CHANNEL_SERVICE, &data, &size, &flags);
+        if (received == UBII_OK || received == UBII_ERR_TOO_LARGE) {
+            if (received == UBII_OK) {
+                ubii__parse_reply(data, size, &reply, &error_storage);
+            } else { /* the port dropped a reply over its size limit */
+                memset(&reply, 0, sizeof reply);
+                reply.status = UBII_ERR_TOO_LARGE;
+                reply.error_title = empty_text;
+                reply.error_message = empty_text;
+            }
+            if (reply.status == UBII_ERR_DECODE || reply.status == UBII_ERR_TOO_LARGE) {
                 node->stats.decode_errors++;
             }
             ubii__call call = pop_head(node);

@@ -16,7 +16,8 @@ socket.connect(`tcp://127.0.0.1:${masterPort}`);
 const waiting = [];
 socket.on('message', (reply) => {
   const { response } = waiting.shift();
-  response.writeHead(200, { 'Content-Type': 'application/octet-stream' });
+  // Express's res.send(Buffer), as the master answers, states the length (no chunked encoding).
+  response.writeHead(200, { 'Content-Type': 'application/octet-stream', 'Content-Length': reply.length });
   response.end(reply);
   if (waiting.length > 0) socket.send(waiting[0].body);
 });

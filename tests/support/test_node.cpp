@@ -37,7 +37,7 @@ std::string unique_topic(const std::string &stem)
 
 TestNode::TestNode(const std::string &name, const std::string &topic_url,
                    const std::string &service, Tls tls)
-    : name_(name), topic_url_(topic_url), service_url_(service),
+    : name_(name), topic_url_(topic_url), service_url_(service), port_(tls),
       node_(std::make_unique<ubii_node>())
 {
     ubii_config_init(&config_);
@@ -49,13 +49,6 @@ TestNode::TestNode(const std::string &name, const std::string &topic_url,
     config_.on_error_user = this;
     config_.on_state = on_state;
     config_.on_state_user = this;
-    ubii_linux_port_options options{};
-    options.libwebsockets_log_level = 1;  // LLL_ERR: no notice per HTTP transaction
-    options.enable_tls = tls != Tls::off; // only the TLS tests need it
-    options.allow_self_signed = tls == Tls::allow_self_signed;
-    if (ubii_linux_port_create(&port_, &options) != UBII_OK) {
-        throw std::runtime_error("cannot create the Linux port");
-    }
 }
 
 TestNode::~TestNode()
@@ -63,14 +56,12 @@ TestNode::~TestNode()
     if (initialised_) {
         ubii_node_stop_wait(node_.get(), 3000);
     }
-    ubii_linux_port_destroy(port_);
 }
 
 bool TestNode::poll_until(const std::function<bool()> &done, std::chrono::milliseconds timeout)
 {
     if (!initialised_) {
-        if (ubii_node_init(node_.get(), sizeof(ubii_node), &config_, ubii_linux_port_get(port_)) !=
-            UBII_OK) {
+        if (ubii_node_init(node_.get(), sizeof(ubii_node), &config_, port_.get()) != UBII_OK) {
             return false;
         }
         initialised_ = true;

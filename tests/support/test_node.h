@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "ubii/port_linux.h"
+#include "test_port.h"
 #include "ubii/ubii.h"
 
 namespace ubii_test
@@ -31,9 +31,6 @@ struct Received {
     int64_t millis;
 };
 
-// How the node's port handles wss:// and https://.
-enum class Tls { off, strict, allow_self_signed };
-
 class TestNode
 {
   public:
@@ -49,7 +46,7 @@ class TestNode
     }
     const char *transport_error() const
     {
-        return ubii_linux_port_last_error(port_);
+        return port_.last_error();
     }
     ubii_config &config()
     {
@@ -89,7 +86,7 @@ class TestNode
 
     std::string name_, topic_url_, service_url_;
     ubii_config config_;
-    ubii_linux_port *port_ = nullptr;
+    TestPort port_;
     std::unique_ptr<ubii_node> node_;
     bool initialised_ = false;
     std::vector<Received> received_;

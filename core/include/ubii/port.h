@@ -58,7 +58,8 @@ typedef struct ubii_port_vtable {
     /* Queues the message written into the reserved buffer; `flags` may hold UBII_MESSAGE_TEXT. */
     ubii_status (*send_commit)(void *port, ubii_channel channel, unsigned flags);
     /* Takes the next whole received message: UBII_OK with data, size and flags set, or
-     * UBII_ERR_WOULD_BLOCK when there is none. Messages over the port's limit are dropped there. */
+     * UBII_ERR_WOULD_BLOCK when there is none. A message over the port's limit is dropped there
+     * (never buffered) and reported once as UBII_ERR_TOO_LARGE; the channel stays usable. */
     ubii_status (*receive)(void *port, ubii_channel channel, const uint8_t **data, size_t *size,
                            unsigned *flags);
     /* Does pending I/O, waiting at most timeout_ms (0: not at all) for something to happen. */

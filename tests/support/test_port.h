@@ -1,0 +1,36 @@
+#ifndef UBII_TEST_PORT_H
+#define UBII_TEST_PORT_H
+
+// The port the tests run on: the build's UBII_PORT (Linux or embedded), behind one small class so
+// that one integration suite serves both.
+
+#include <memory>
+
+#include "ubii/port.h"
+
+namespace ubii_test
+{
+
+// How the port handles wss:// and https:// (the embedded port has no TLS).
+enum class Tls { off, strict, allow_self_signed };
+
+class TestPort
+{
+  public:
+    explicit TestPort(Tls tls = Tls::off);
+    ~TestPort();
+    TestPort(const TestPort &) = delete;
+    TestPort &operator=(const TestPort &) = delete;
+
+    ubii_port get();
+    const char *last_error() const;
+    static bool supports_tls();
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace ubii_test
+
+#endif

@@ -1,0 +1,44 @@
+#include <stdexcept>
+
+#include "test_port.h"
+#include "ubii/port_linux.h"
+
+namespace ubii_test
+{
+
+struct TestPort::Impl {
+    ubii_linux_port *port = nullptr;
+};
+
+TestPort::TestPort(Tls tls) : impl_(std::make_unique<Impl>())
+{
+    ubii_linux_port_options options{};
+    options.libwebsockets_log_level = 1;  // LLL_ERR: no notice per HTTP transaction
+    options.enable_tls = tls != Tls::off; // only the TLS tests need it
+    options.allow_self_signed = tls == Tls::allow_self_signed;
+    if (ubii_linux_port_create(&impl_->port, &options) != UBII_OK) {
+        throw std::runtime_error("cannot create the Linux port");
+    }
+}
+
+TestPort::~TestPort()
+{
+    ubii_linux_port_destroy(impl_->port);
+}
+
+ubii_port TestPort::get()
+{
+    return ubii_linux_port_get(impl_->port);
+}
+
+const char *TestPort::last_error() const
+{
+    return ubii_linux_port_last_error(impl_->port);
+}
+
+bool TestPort::supports_tls()
+{
+    return true;
+}
+
+} // namespace ubii_test
