@@ -37,6 +37,10 @@ extern const protocol_driver ubii__http_driver;
 
 /* embedded_port.c */
 void ubii__embedded_error(ubii_embedded_port *port, const char *what);
+/* Drops a message whose frame of `size` payload bytes starts at rx[payload]: what has arrived
+ * goes with *consumed, the rest is skipped as it streams in. Returns PARSE_TOO_LARGE. */
+parse_result ubii__embedded_drop(ubii_embedded_port *port, ubii__embedded_channel *ch,
+                                 size_t payload, uint64_t size, size_t *consumed);
 /* Appends bytes to tx; false if they do not fit. */
 bool ubii__embedded_queue(ubii__embedded_channel *ch, const void *bytes, size_t size);
 

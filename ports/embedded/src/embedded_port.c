@@ -34,6 +34,16 @@ bool ubii__embedded_queue(ubii__embedded_channel *ch, const void *bytes, size_t 
     return true;
 }
 
+parse_result ubii__embedded_drop(ubii_embedded_port *port, ubii__embedded_channel *ch,
+                                 size_t payload, uint64_t size, size_t *consumed)
+{
+    size_t here = ch->rx_used - payload;
+    *consumed = here >= size ? payload + (size_t)size : ch->rx_used;
+    ch->discard = here >= size ? 0 : size - here;
+    ubii__embedded_error(port, "a message over UBII_EMBEDDED_MAX_MESSAGE was dropped");
+    return PARSE_TOO_LARGE;
+}
+
 static const protocol_driver *driver_of(const ubii__embedded_channel *ch)
 {
     switch (ch->protocol) {

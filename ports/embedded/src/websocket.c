@@ -164,12 +164,7 @@ static parse_result parse(ubii_embedded_port *port, ubii__embedded_channel *ch,
                 ubii__embedded_error(port, "WebSocket fragment over UBII_EMBEDDED_MAX_MESSAGE");
                 return PARSE_ERROR;
             }
-            /* Dropped, not buffered: what is here goes now, the rest as it arrives. */
-            size_t here = ch->rx_used - payload;
-            *consumed = here >= frame_size ? payload + (size_t)frame_size : ch->rx_used;
-            ch->discard = here >= frame_size ? 0 : frame_size - here;
-            ubii__embedded_error(port, "a message over UBII_EMBEDDED_MAX_MESSAGE was dropped");
-            return PARSE_TOO_LARGE;
+            return ubii__embedded_drop(port, ch, payload, frame_size, consumed);
         }
         if (ch->rx_used < payload + frame_size) {
             break;

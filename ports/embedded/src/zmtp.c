@@ -153,12 +153,7 @@ static parse_result parse(ubii_embedded_port *port, ubii__embedded_channel *ch,
             break;
         }
         if (frame_size > UBII_EMBEDDED_MAX_MESSAGE) {
-            /* Dropped, not buffered: what is here goes now, the rest as it arrives. */
-            size_t here = ch->rx_used - body;
-            *consumed = here >= frame_size ? body + (size_t)frame_size : ch->rx_used;
-            ch->discard = here >= frame_size ? 0 : frame_size - here;
-            ubii__embedded_error(port, "a message over UBII_EMBEDDED_MAX_MESSAGE was dropped");
-            return PARSE_TOO_LARGE;
+            return ubii__embedded_drop(port, ch, body, frame_size, consumed);
         }
         if (ch->rx_used < body + frame_size) {
             break;
