@@ -10,6 +10,7 @@ packages=(
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev clang-format
   iproute2 util-linux
+  gcc-arm-linux-gnueabihf qemu-user
 )
 
 missing=()

@@ -12,7 +12,7 @@
 
 #include "example_args.h"
 #include "ubii/dataStructure/vector3.pb.h"
-#include "ubii/port_linux.h"
+#include "example_port.h"
 #include "ubii/ubii.h"
 
 /* Topics are scoped by the publisher's client id, so that runs side by side do not mix. */
@@ -70,11 +70,8 @@ static int both_ready(ubii_node *a, ubii_node *b)
 int main(int argc, char **argv)
 {
     example_args args = example_parse_args(argc, argv, 3.0);
-    ubii_linux_port_options options = {0};
-    options.libwebsockets_log_level = 1; /* errors only */
-    ubii_linux_port *publisher_port = NULL, *subscriber_port = NULL;
-    if (ubii_linux_port_create(&publisher_port, &options) != UBII_OK ||
-        ubii_linux_port_create(&subscriber_port, &options) != UBII_OK) {
+    static example_port publisher_port, subscriber_port;
+    if (!example_port_open(&publisher_port) || !example_port_open(&subscriber_port)) {
         fprintf(stderr, "pubsub: cannot create the transport\n");
         return 1;
     }
@@ -88,10 +85,10 @@ int main(int argc, char **argv)
     static ubii_node publisher, subscriber;
     config.client_name = "libubii-example-publisher";
     config.on_error_user = "publisher";
-    ubii_node_init(&publisher, sizeof publisher, &config, ubii_linux_port_get(publisher_port));
+    ubii_node_init(&publisher, sizeof publisher, &config, example_port_get(&publisher_port));
     config.client_name = "libubii-example-subscriber";
     config.on_error_user = "subscriber";
-    ubii_node_init(&subscriber, sizeof subscriber, &config, ubii_linux_port_get(subscriber_port));
+    ubii_node_init(&subscriber, sizeof subscriber, &config, example_port_get(&subscriber_port));
 
     if (ubii_node_start(&publisher) != UBII_OK || ubii_node_start(&subscriber) != UBII_OK ||
         !pump(&publisher, &subscriber, 10.0, both_ready)) {
@@ -138,7 +135,7 @@ int main(int argc, char **argv)
 
     ubii_node_stop_wait(&publisher, 2000);
     ubii_node_stop_wait(&subscriber, 2000);
-    ubii_linux_port_destroy(publisher_port);
-    ubii_linux_port_destroy(subscriber_port);
+    example_port_close(&publisher_port);
+    example_port_close(&subscriber_port);
     return sent > 0 && received == sent ? 0 : 1;
 }
