@@ -10,7 +10,7 @@ packages=(
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev clang-format
   iproute2 util-linux
-  gcc-arm-linux-gnueabihf qemu-user
+  gcc-arm-linux-gnueabihf libc6-dev-armhf-cross qemu-user
 )
 
 missing=()
