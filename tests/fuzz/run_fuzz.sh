@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang and runs each for SECONDS (default 10). Longer runs:
+#   tests/fuzz/run_fuzz.sh . build/fuzz 600
+# Exit 77 (skipped) if clang is missing; a crash, leak or sanitizer finding fails.
+#   run_fuzz.sh SOURCE_DIR WORK_DIR [SECONDS]
+set -euo pipefail
+source=$(cd "${1:?}" && pwd) work=${2:?} seconds=${3:-10}
+command -v clang >/dev/null || { echo "run_fuzz: clang missing (scripts/bootstrap.sh installs it): skipped"; exit 77; }
+CC=clang cmake -S "$source" -B "$work" -DUBII_PORT=embedded -DUBII_BUILD_FUZZ=ON -DUBII_BUILD_TESTS=OFF \
+  -DUBII_BUILD_EXAMPLES=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo >"$work.configure.log" 2>&1 ||
+  { cat "$work.configure.log"; exit 1; }
+cmake --build "$work" -j 2 >"$work.build.log" 2>&1 || { cat "$work.build.log"; exit 1; }
+for target in fuzz_port_parsers fuzz_topic_data fuzz_service_reply; do
+  corpus="$work/corpus/$target"
+  mkdir -p "$corpus"
+  "$work/tests/fuzz/$target" -max_total_time="$seconds" -print_final_stats=1 "$corpus" \
+    >"$work/$target.log" 2>&1 || { tail -n 40 "$work/$target.log"; exit 1; }
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$work/$target.log")
+  echo "run_fuzz: $target: $runs inputs in $seconds s, no finding"
+done
