@@ -49,6 +49,11 @@ const topic = '/libubii/bench/echo-nodejs';
 
   const base = received;
   const cpuStart = process.cpuUsage();
+  const switches = () => {
+    const usage = process.resourceUsage();
+    return usage.voluntaryContextSwitches + usage.involuntaryContextSwitches;
+  };
+  const switchesStart = switches();
   const start = process.hrtime.bigint();
   let sent = 0;
   while (sent < messages) {
@@ -58,11 +63,13 @@ const topic = '/libubii/bench/echo-nodejs';
   await until(base + messages, 30000);
   const elapsed = Number(process.hrtime.bigint() - start) / 1e9;
   const cpu = process.cpuUsage(cpuStart);
+  const switchCount = switches() - switchesStart;
   console.log(`RESULT rtt_p50_us=${rtt[Math.floor(rounds / 2)].toFixed(1)} ` +
     `rtt_p99_us=${rtt[Math.floor(rounds * 99 / 100)].toFixed(1)} ` +
     `messages_per_s=${(messages / elapsed).toFixed(0)} ` +
     `cpu_us_per_message=${((cpu.user + cpu.system) / messages).toFixed(2)} ` +
     `user_us_per_message=${(cpu.user / messages).toFixed(2)} ` +
-    `system_us_per_message=${(cpu.system / messages).toFixed(2)}`);
+    `system_us_per_message=${(cpu.system / messages).toFixed(2)} ` +
+    `switches_per_message=${(switchCount / messages).toFixed(2)}`);
   process.exit(0);
 })().catch((error) => { console.error('nodejs_bench:', error.message); process.exit(1); });

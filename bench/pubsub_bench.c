@@ -3,19 +3,27 @@
  *   latency:    ROUNDS sequential round trips (publish, wait for the master's copy), p50/p99;
  *   throughput: MESSAGES published with at most WINDOW unanswered, messages/s received back,
  *               and this process's CPU time (user + system) per message.
+ * The throughput phase either reacts to every arrival (poll with a timeout, as an event loop
+ * does) or, with FRAME_US > 0, runs as a game engine's tick would: poll(node, 0) once per frame
+ * of FRAME_US microseconds, sleeping in between.
  * Prints one line of key=value figures (bench/run.sh puts them beside the Node.js node's).
  *
- *   pubsub_bench SERVICE_URL TOPIC_URL [ROUNDS [MESSAGES [WINDOW]]] */
+ *   pubsub_bench SERVICE_URL TOPIC_URL [ROUNDS [MESSAGES [WINDOW [FRAME_US]]]] */
 #define _POSIX_C_SOURCE 200809L
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
 #include <time.h>
 
-#include "ubii/port_linux.h"
 #include "ubii/ubii.h"
+#ifdef UBII_BENCH_EMBEDDED
+#include "ubii/port_embedded.h"
+#else
+#include "ubii/port_linux.h"
+#endif
 
 static const char topic[] = "/libubii/bench/echo";
 
@@ -27,13 +35,15 @@ static double now_seconds(void)
 }
 
 /* Process CPU time in seconds: user (the process's own code) and system (the kernel on its
- * behalf: sockets, loopback TCP, thread wake-ups). */
-static void cpu_seconds(double *user, double *system)
+ * behalf: sockets, loopback TCP, thread wake-ups); and how often its threads went to sleep or
+ * were preempted (each sleep is a wake-up the kernel pays for). */
+static void cpu_seconds(double *user, double *system, long *switches)
 {
     struct rusage usage;
     getrusage(RUSAGE_SELF, &usage);
     *user = (double)usage.ru_utime.tv_sec + (double)usage.ru_utime.tv_usec / 1e6;
     *system = (double)usage.ru_stime.tv_sec + (double)usage.ru_stime.tv_usec / 1e6;
+    *switches = usage.ru_nvcsw + usage.ru_nivcsw;
 }
 
 static long received = 0;
@@ -52,6 +62,15 @@ static int compare(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+static void sleep_until_next_frame(double since, long frame_us)
+{
+    double frame = (double)frame_us / 1e6;
+    double elapsed = now_seconds() - since;
+    double wait = frame - fmod(elapsed, frame);
+    struct timespec pause = {(time_t)wait, (long)((wait - (double)(time_t)wait) * 1e9)};
+    nanosleep(&pause, NULL);
+}
+
 static int poll_until(ubii_node *node, long target, double timeout)
 {
     double deadline = now_seconds() + timeout;
@@ -67,13 +86,24 @@ static int poll_until(ubii_node *node, long target, double timeout)
 int main(int argc, char **argv)
 {
     if (argc < 3) {
-        fprintf(stderr, "usage: pubsub_bench SERVICE_URL TOPIC_URL [ROUNDS [MESSAGES [WINDOW]]]\n");
+        fprintf(
+            stderr,
+            "usage: pubsub_bench SERVICE_URL TOPIC_URL [ROUNDS [MESSAGES [WINDOW [FRAME_US]]]]\n");
         return 2;
     }
     int rounds = argc > 3 ? atoi(argv[3]) : 2000;
     long messages = argc > 4 ? atol(argv[4]) : 20000;
     long window = argc > 5 ? atol(argv[5]) : 100;
+    long frame_us = argc > 6 ? atol(argv[6]) : 0;
 
+#ifdef UBII_BENCH_EMBEDDED
+    static ubii_embedded_port embedded_port;
+    ubii_embedded_port *port = &embedded_port;
+    if (ubii_embedded_port_init(port, ubii_embedded_posix_platform()) != UBII_OK) {
+        return 1;
+    }
+    ubii_port port_handle = ubii_embedded_port_get(port);
+#else
     ubii_linux_port_options options = {0};
     options.libwebsockets_log_level = 1;
     /* A ZMQ-only application need not start libwebsockets at all. */
@@ -82,6 +112,8 @@ int main(int argc, char **argv)
     if (ubii_linux_port_create(&port, &options) != UBII_OK) {
         return 1;
     }
+    ubii_port port_handle = ubii_linux_port_get(port);
+#endif
     ubii_config config;
     ubii_config_init(&config);
     config.service_url = argv[1];
@@ -89,7 +121,7 @@ int main(int argc, char **argv)
     config.client_name = "libubii-bench";
     config.stamp_records = false; /* as the Node.js side, which stamps nothing either */
     static ubii_node node;
-    ubii_node_init(&node, sizeof node, &config, ubii_linux_port_get(port));
+    ubii_node_init(&node, sizeof node, &config, port_handle);
     ubii_subscribe(&node, topic, on_record, NULL, NULL);
     ubii_node_start(&node);
     double deadline = now_seconds() + 10;
@@ -122,7 +154,8 @@ int main(int argc, char **argv)
 
     long base = received;
     double user_start, system_start;
-    cpu_seconds(&user_start, &system_start);
+    long switches_start;
+    cpu_seconds(&user_start, &system_start, &switches_start);
     double start = now_seconds();
     long sent = 0;
     while (sent < messages) {
@@ -132,7 +165,12 @@ int main(int argc, char **argv)
             }
             sent++;
         }
-        ubii_node_poll(&node, 1);
+        if (frame_us > 0) {
+            ubii_node_poll(&node, 0);
+            sleep_until_next_frame(start, frame_us);
+        } else {
+            ubii_node_poll(&node, 1);
+        }
     }
     if (!poll_until(&node, base + messages, 30.0)) {
         fprintf(stderr, "pubsub_bench: %ld of %ld came back\n", received - base, messages);
@@ -140,15 +178,21 @@ int main(int argc, char **argv)
     }
     double elapsed = now_seconds() - start;
     double user_end, system_end;
-    cpu_seconds(&user_end, &system_end);
+    long switches_end;
+    cpu_seconds(&user_end, &system_end, &switches_end);
     double user = user_end - user_start, system = system_end - system_start;
     printf("rtt_p50_us=%.1f rtt_p99_us=%.1f messages_per_s=%.0f cpu_us_per_message=%.2f "
-           "user_us_per_message=%.2f system_us_per_message=%.2f\n",
+           "user_us_per_message=%.2f system_us_per_message=%.2f switches_per_message=%.2f\n",
            rtt[rounds / 2], rtt[rounds * 99 / 100], (double)messages / elapsed,
            (user + system) * 1e6 / (double)messages, user * 1e6 / (double)messages,
-           system * 1e6 / (double)messages);
+           system * 1e6 / (double)messages,
+           (double)(switches_end - switches_start) / (double)messages);
     free(rtt);
     ubii_node_stop_wait(&node, 2000);
+#ifdef UBII_BENCH_EMBEDDED
+    ubii_embedded_port_close(port);
+#else
     ubii_linux_port_destroy(port);
+#endif
     return 0;
 }

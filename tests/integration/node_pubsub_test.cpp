@@ -1,5 +1,6 @@
 // A node against the real master: the connection sequence, publish and subscribe.
 #include <cstring>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -71,5 +72,49 @@ TEST(NodeWebSocket, DoubleRoundTripsOverWebSocketTopicData)
     std::memcpy(&value, &node.received().front().scalar, sizeof value);
     EXPECT_EQ(value, -7.25);
 }
+
+} // namespace
+
+namespace
+{
+
+// A game engine polls once per frame, without waiting. Everything published during a frame must go
+// out and come back within a few frames, not one message per poll.
+class NodeFrameTick : public ::testing::TestWithParam<std::string>
+{
+};
+
+TEST_P(NodeFrameTick, HundredsOfMessagesPerFrameGoOutAndComeBack)
+{
+    TestNode node("frame-tick-test", GetParam());
+    ASSERT_TRUE(node.wait_ready());
+    const std::string topic = unique_topic("/frame-tick");
+    node.collect(topic);
+    ASSERT_TRUE(node.poll_until([&] {
+        ubii_publish_double(node.get(), topic.c_str(), -1.0);
+        return !node.received().empty();
+    }));
+    node.poll_until([] { return false; }, std::chrono::milliseconds(100)); // late warm-up copies
+    node.received().clear();
+
+    constexpr int messages = 300;
+    for (int i = 0; i < messages; ++i) {
+        ASSERT_EQ(ubii_publish_double(node.get(), topic.c_str(), i), UBII_OK);
+    }
+    constexpr int frames = 30; // at 60 Hz: half a second
+    int frame = 0;
+    for (; frame < frames && node.received().size() < messages; ++frame) {
+        ASSERT_EQ(ubii_node_poll(node.get(), 0), UBII_OK);
+        std::this_thread::sleep_for(std::chrono::microseconds(16667));
+    }
+    EXPECT_EQ(node.received().size(), static_cast<size_t>(messages))
+        << "after " << frame << " frames";
+}
+
+INSTANTIATE_TEST_SUITE_P(Transports, NodeFrameTick,
+                         ::testing::Values(ubii_test::topic_zmq_url(), ubii_test::topic_ws_url()),
+                         [](const ::testing::TestParamInfo<std::string> &transport) {
+                             return transport.param.rfind("ws", 0) == 0 ? "WebSocket" : "Zmq";
+                         });
 
 } // namespace

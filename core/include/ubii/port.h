@@ -55,7 +55,9 @@ typedef struct ubii_port_vtable {
      * *buffer until send_commit(); UBII_ERR_WOULD_BLOCK when the channel cannot take it now,
      * UBII_ERR_TOO_LARGE over the port's limit. */
     ubii_status (*send_begin)(void *port, ubii_channel channel, size_t size, uint8_t **buffer);
-    /* Queues the message written into the reserved buffer; `flags` may hold UBII_MESSAGE_TEXT. */
+    /* Queues the message written into the reserved buffer; `flags` may hold UBII_MESSAGE_TEXT.
+     * A port may hold it back to send it together with others, but no later than the next
+     * wait(), and it must then report the fd writable-interest in pollfds(). */
     ubii_status (*send_commit)(void *port, ubii_channel channel, unsigned flags);
     /* Takes the next whole received message: UBII_OK with data, size and flags set, or
      * UBII_ERR_WOULD_BLOCK when there is none. A message over the port's limit is dropped there

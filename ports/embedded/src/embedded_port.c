@@ -291,6 +291,10 @@ static ubii_status wait_for_io(void *context, int timeout_ms)
         if (ch->fd < 0) {
             continue;
         }
+        flush(port, ch); /* what was queued since the last wait, in as few sends as it takes */
+        if (ch->fd < 0) {
+            continue;
+        }
         fds[count].fd = ch->fd;
         fds[count].events = POLLIN;
         if (ch->phase == PHASE_CONNECTING || ch->tx_sent < ch->tx_used) {
@@ -344,7 +348,10 @@ static ubii_status send_begin(void *context, ubii_channel which, size_t size, ui
     }
     size_t header = driver_of(ch)->header_size(ch, size);
     if (ch->tx_used + header + size > sizeof ch->tx) {
-        return UBII_ERR_WOULD_BLOCK;
+        flush(port, ch);
+        if (ch->tx_used + header + size > sizeof ch->tx) {
+            return UBII_ERR_WOULD_BLOCK;
+        }
     }
     ch->header_room = header;
     ch->reserved_at = ch->tx_used + header;
@@ -370,12 +377,10 @@ static ubii_status send_commit(void *context, ubii_channel which, unsigned flags
         /* A new request: the previous reply (delivered by now) is done with. */
         ch->lent = false;
         ch->rx_used = 0;
-        ubii_status status = start_connect(port, ch);
-        if (status != UBII_OK) {
-            return status;
-        }
+        return start_connect(port, ch);
     }
-    flush(port, ch);
+    /* Not sent yet: messages committed before the next wait go out together, which saves the
+     * kernel a send (and the master a wake-up) per message. */
     return UBII_OK;
 }
 

@@ -210,10 +210,12 @@ static parse_result parse(ubii_embedded_port *port, ubii__embedded_channel *ch,
     size_t joined = 0;
     at = 0;
     for (;;) {
-        bool fin, masked;
-        int opcode;
-        size_t payload;
-        uint64_t frame_size;
+        /* The first pass checked every header; the initial values only quiet -O3's
+         * maybe-uninitialized analysis, which cannot see that. */
+        bool fin = true, masked = false;
+        int opcode = OPCODE_CLOSE;
+        size_t payload = 0;
+        uint64_t frame_size = 0;
         read_header(ch, at, &fin, &opcode, &payload, &frame_size, &masked);
         size_t next = payload + (size_t)frame_size;
         if (opcode == OPCODE_PING) {

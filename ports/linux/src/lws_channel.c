@@ -404,17 +404,21 @@ static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void 
         if (ch == NULL) {
             return -1; /* the channel was closed: end the connection */
         }
-        queued_message *message = pop(&ch->outbox);
-        if (message == NULL) {
-            break;
-        }
-        enum lws_write_protocol kind =
-            message->flags & UBII_MESSAGE_TEXT ? LWS_WRITE_TEXT : LWS_WRITE_BINARY;
-        int written = lws_write(wsi, message->data, message->size, kind);
-        free(message);
-        if (written < 0) {
-            lose(connection, "WebSocket write failed", NULL);
-            return -1;
+        /* As many as the socket takes now: one per callback would cap a node polled once per
+         * frame at one message per frame. */
+        queued_message *message;
+        while ((message = pop(&ch->outbox)) != NULL) {
+            enum lws_write_protocol kind =
+                message->flags & UBII_MESSAGE_TEXT ? LWS_WRITE_TEXT : LWS_WRITE_BINARY;
+            int written = lws_write(wsi, message->data, message->size, kind);
+            free(message);
+            if (written < 0) {
+                lose(connection, "WebSocket write failed", NULL);
+                return -1;
+            }
+            if (lws_send_pipe_choked(wsi)) {
+                break;
+            }
         }
         if (ch->outbox.count > 0) {
             lws_callback_on_writable(wsi);
