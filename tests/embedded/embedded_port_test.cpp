@@ -1,10 +1,18 @@
 // The embedded port without a master: its HTTP reply parser on hand-written byte streams, split at
-// every point (as TCP may deliver them), the HTTP request head it writes, and the limits that
-// open() and send_begin() check.
+// every point (as TCP may deliver them), the HTTP request head it writes, the limits that open()
+// and send_begin() check, and the service channel's one buffer against a scripted ZMTP REP peer.
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <string>
+#include <thread>
 #include <vector>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -370,5 +378,167 @@ TEST_F(EmbeddedPort, ClientIdsThatDoNotFitAreRefused)
     EXPECT_NE(error().find("client id"), std::string::npos) << error();
     EXPECT_EQ(open(UBII_CHANNEL_TOPIC, "tcp://127.0.0.1:9", ""), UBII_ERR_INVALID_ARGUMENT);
 }
+
+// ---- the service channel's one buffer -------------------------------------------------------
+
+// A ZMTP 3.0 REP peer on loopback that answers two requests ("reply to " and the request); after
+// the first reply it sends `extra` in the same write, as a peer may send a heartbeat command
+// between replies.
+class ZmtpRepPeer
+{
+  public:
+    explicit ZmtpRepPeer(std::string extra) : extra_(std::move(extra))
+    {
+        listener_ = socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        socklen_t length = sizeof address;
+        if (bind(listener_, reinterpret_cast<sockaddr *>(&address), sizeof address) != 0 ||
+            listen(listener_, 1) != 0 ||
+            getsockname(listener_, reinterpret_cast<sockaddr *>(&address), &length) != 0) {
+            ADD_FAILURE() << "no listening socket";
+        }
+        port_ = ntohs(address.sin_port);
+        thread_ = std::thread([this] { serve(); });
+    }
+    ~ZmtpRepPeer()
+    {
+        thread_.join();
+        close(listener_);
+    }
+    uint16_t port() const
+    {
+        return port_;
+    }
+    static std::string frame(uint8_t flags, const std::string &body)
+    {
+        return std::string(1, static_cast<char>(flags)) +
+               std::string(1, static_cast<char>(body.size())) + body;
+    }
+    static std::string message(const std::string &payload)
+    {
+        return frame(0x01, "") + frame(0x00, payload); // delimiter, payload
+    }
+
+  private:
+    bool read_exactly(int fd, size_t size, std::string &out)
+    {
+        out.resize(size);
+        for (size_t got = 0; got < size;) {
+            ssize_t n = recv(fd, &out[got], size - got, 0);
+            if (n <= 0) {
+                return false;
+            }
+            got += static_cast<size_t>(n);
+        }
+        return true;
+    }
+    void serve()
+    {
+        // Bounded waits, so that a failing client cannot hang the test.
+        pollfd listening = {listener_, POLLIN, 0};
+        if (poll(&listening, 1, 5000) != 1) {
+            return;
+        }
+        int fd = accept(listener_, nullptr, nullptr);
+        timeval timeout = {5, 0};
+        setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
+        std::string greeting(64, '\0'), ignored;
+        greeting[0] = '\xFF';
+        greeting[9] = '\x7F';
+        greeting[10] = 3;
+        greeting.replace(12, 4, "NULL");
+        std::string ready = "\x05READY\x0BSocket-Type" + std::string("\0\0\0\x03", 4) + "REP";
+        std::string out = greeting + frame(0x04, ready);
+        send(fd, out.data(), out.size(), 0);
+        std::string head;
+        // The client's greeting, its READY (short command frame), then two requests.
+        if (read_exactly(fd, 64, ignored) && read_exactly(fd, 2, head) &&
+            read_exactly(fd, static_cast<uint8_t>(head[1]), ignored)) {
+            for (int i = 1; i <= 2; ++i) {
+                std::string body;
+                if (!read_exactly(fd, 4, head) ||
+                    !read_exactly(fd, static_cast<uint8_t>(head[3]), body)) {
+                    break;
+                }
+                out = message("reply to " + body) + (i == 1 ? extra_ : "");
+                send(fd, out.data(), out.size(), 0);
+            }
+        }
+        read_exactly(fd, 1, ignored); // until the client closes
+        close(fd);
+    }
+
+    std::string extra_;
+    int listener_ = -1;
+    uint16_t port_ = 0;
+    std::thread thread_;
+};
+
+// Sends `request` on the service channel and returns the reply's text ("" on timeout).
+std::string call(ubii_embedded_port &port, const std::string &request)
+{
+    ubii_port handle = ubii_embedded_port_get(&port);
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    uint8_t *buffer = nullptr;
+    while (handle.vtable->send_begin(handle.context, UBII_CHANNEL_SERVICE, request.size(),
+                                     &buffer) != UBII_OK) {
+        if (std::chrono::steady_clock::now() > deadline) {
+            return "";
+        }
+        handle.vtable->wait(handle.context, 10);
+    }
+    std::memcpy(buffer, request.data(), request.size());
+    EXPECT_EQ(handle.vtable->send_commit(handle.context, UBII_CHANNEL_SERVICE, 0), UBII_OK);
+    const uint8_t *data;
+    size_t size;
+    unsigned flags;
+    while (handle.vtable->receive(handle.context, UBII_CHANNEL_SERVICE, &data, &size, &flags) !=
+           UBII_OK) {
+        if (std::chrono::steady_clock::now() > deadline) {
+            return "";
+        }
+        handle.vtable->wait(handle.context, 10);
+    }
+    return std::string(reinterpret_cast<const char *>(data), size);
+}
+
+class SharedServiceBuffer : public ::testing::TestWithParam<bool>
+{
+};
+
+TEST_P(SharedServiceBuffer, WhatThePeerSendsBetweenRepliesIsClearedBeforeTheNextRequest)
+{
+    const bool stray_message = GetParam();
+    const std::string heartbeat = ZmtpRepPeer::frame(0x04, "\x04PING" + std::string(2, '\0'));
+    ZmtpRepPeer peer(stray_message ? ZmtpRepPeer::message("stray") : heartbeat);
+    struct ClosedAtTheEnd {
+        ubii_embedded_port port;
+        ~ClosedAtTheEnd()
+        {
+            ubii_embedded_port_close(&port);
+        }
+    } owner;
+    ubii_embedded_port &port = owner.port;
+    ubii_embedded_port_init(&port, ubii_embedded_posix_platform());
+    ubii_port handle = ubii_embedded_port_get(&port);
+    const std::string url = "tcp://127.0.0.1:" + std::to_string(peer.port());
+    ASSERT_EQ(handle.vtable->open(handle.context, UBII_CHANNEL_SERVICE, url.c_str(), nullptr),
+              UBII_OK);
+
+    EXPECT_EQ(call(port, "request-1"), "reply to request-1");
+    // What came after the reply sits behind it in the one buffer the next request needs.
+    const ubii__embedded_channel &ch = port.channels[UBII_CHANNEL_SERVICE];
+    for (int i = 0; i < 100 && ch.rx_used == ch.lent_size; ++i) {
+        handle.vtable->wait(handle.context, 10);
+    }
+    ASSERT_GT(ch.rx_used, ch.lent_size);
+    EXPECT_EQ(call(port, "request-2"), "reply to request-2")
+        << ubii_embedded_port_last_error(&port);
+    EXPECT_EQ(port.decode_errors, stray_message ? 1u : 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(HeartbeatOrStrayMessage, SharedServiceBuffer, ::testing::Bool());
 
 } // namespace

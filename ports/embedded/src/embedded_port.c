@@ -457,7 +457,6 @@ static ubii_status send_commit(void *context, ubii_channel which, unsigned flags
     driver_of(ch)->frame(port, ch, ch->reserved_at, ch->reserved, flags);
     ch->tx_used = ch->reserved_at + ch->reserved;
     ch->header_room = 0;
-    ch->reserved = 0;
     if (ch->protocol == PROTOCOL_HTTP) {
         ubii_status status = start_connect(port, ch);
         if (status != UBII_OK) {
