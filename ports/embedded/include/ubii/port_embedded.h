@@ -86,7 +86,8 @@ typedef struct ubii__embedded_channel {
     size_t body_left;   /* HTTP: body bytes still to come (of the reply, or of the chunk) */
 } ubii__embedded_channel;
 
-/* The application owns it and must not move it after ubii_embedded_port_init(). */
+/* The application owns it; it must not be moved while a channel is open (its channels point into
+ * its own buffers). */
 typedef struct ubii_embedded_port {
     ubii_embedded_platform platform;
     ubii__embedded_channel channels[UBII_CHANNEL_COUNT];
