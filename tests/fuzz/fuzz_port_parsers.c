@@ -1,6 +1,7 @@
 /* libFuzzer target: the embedded port's ZMTP, WebSocket and HTTP parsers on arbitrary bytes from
- * the network, in every phase. The first byte picks protocol and phase; the rest is what arrived.
- * Every message parsed must lie inside the receive buffer. */
+ * the network, in every phase. The first byte picks protocol and phase, the second how many bytes
+ * arrive at a time (0: all at once); the rest is what arrives. Every message parsed must lie inside
+ * the receive buffer and within the size limit. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -29,7 +30,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static ubii_embedded_port port;
-    if (size < 1) {
+    if (size < 2) {
         return 0;
     }
     ubii_embedded_platform platform = {fixed_ms, fixed_epoch, zero_bytes, NULL};
@@ -44,21 +45,41 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     strcpy(ch->path, "/");
     strcpy(ch->websocket_key, "dGhlIHNhbXBsZSBub25jZQ==");
     const protocol_driver *driver = drivers[selector % 3];
-    size_t copied = size - 1 < sizeof ch->rx ? size - 1 : sizeof ch->rx;
-    memcpy(ch->rx, data + 1, copied);
-    ch->rx_used = copied;
-    for (int rounds = 0; rounds < 64 && ch->rx_used > 0; ++rounds) {
+    size_t slice = data[1] != 0 ? data[1] : UBII_EMBEDDED_BUFFER;
+    const uint8_t *input = data + 2, *input_end = data + size;
+    for (int rounds = 0; rounds < 4096; ++rounds) {
+        /* As read_input() does: the rest of a dropped message is skipped, what follows is
+         * appended as far as there is room. */
+        size_t room = UBII_EMBEDDED_BUFFER - ch->rx_used;
+        size_t arriving = (size_t)(input_end - input);
+        arriving = arriving < slice ? arriving : slice;
+        arriving = arriving < room ? arriving : room;
+        bool input_left = arriving > 0;
+        size_t skipped = ch->discard < arriving ? (size_t)ch->discard : arriving;
+        ch->discard -= skipped;
+        input += skipped;
+        arriving -= skipped;
+        memcpy(ch->rx + ch->rx_used, input, arriving);
+        ch->rx_used += arriving;
+        input += arriving;
         const uint8_t *message = NULL;
         size_t message_size = 0, consumed = 0;
         unsigned flags = 0;
         size_t before = ch->rx_used;
         parse_result result = driver->parse(&port, ch, &message, &message_size, &flags, &consumed);
         if (result == PARSE_MESSAGE &&
-            (message < ch->rx || message + message_size > ch->rx + ch->rx_used)) {
-            abort(); /* a message outside the buffer */
+            (message < ch->rx || message + message_size > ch->rx + ch->rx_used ||
+             message_size > UBII_EMBEDDED_MAX_MESSAGE)) {
+            abort(); /* a message outside the buffer or over the limit */
         }
-        if (result == PARSE_NEED_MORE || result == PARSE_ERROR) {
+        if (result == PARSE_ERROR) {
             break;
+        }
+        if (result == PARSE_NEED_MORE) {
+            if (!input_left && ch->rx_used >= before) {
+                break; /* no more input, and nothing left to parse */
+            }
+            continue;
         }
         /* Progress: bytes consumed, or framing removed in place (WebSocket joins fragments). */
         if ((consumed == 0 && ch->rx_used >= before) || consumed > ch->rx_used) {

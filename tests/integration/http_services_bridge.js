@@ -4,7 +4,8 @@
 // application/octet-stream, a serialized ServiceReply (service errors too). Requests are handed to
 // the master's ZMQ REP socket, one at a time as REQ/REP demands. A request that breaks the contract
 // (other path or method: 404; wrong Content-Type, no Host, wrong Content-Length: 400) makes the
-// node's test fail, since no ServiceReply comes back.
+// node's test fail, since no ServiceReply comes back. POST /services/binary?reply=chunked answers
+// the same with Transfer-Encoding: chunked (small chunks and a trailer), as an HTTP server may.
 //   node http_services_bridge.js LISTEN_PORT MASTER_SERVICE_PORT ZEROMQ_MODULE_DIR
 'use strict';
 const http = require('http');
@@ -15,10 +16,18 @@ const socket = zmq.socket('req');
 socket.connect(`tcp://127.0.0.1:${masterPort}`);
 const waiting = [];
 socket.on('message', (reply) => {
-  const { response } = waiting.shift();
-  // Express's res.send(Buffer), as the master answers, states the length (no chunked encoding).
-  response.writeHead(200, { 'Content-Type': 'application/octet-stream', 'Content-Length': reply.length });
-  response.end(reply);
+  const { response, chunked } = waiting.shift();
+  if (chunked) {
+    // Without a Content-Length, Node's http sends every write() as a chunk of its own.
+    response.writeHead(200, { 'Content-Type': 'application/octet-stream', Trailer: 'X-Reply-Length' });
+    for (let at = 0; at < reply.length; at += 7) response.write(reply.subarray(at, at + 7));
+    response.addTrailers({ 'X-Reply-Length': String(reply.length) });
+    response.end();
+  } else {
+    // Express's res.send(Buffer), as the master answers, states the length.
+    response.writeHead(200, { 'Content-Type': 'application/octet-stream', 'Content-Length': reply.length });
+    response.end(reply);
+  }
   if (waiting.length > 0) socket.send(waiting[0].body);
 });
 
@@ -27,7 +36,8 @@ const server = http.createServer((request, response) => {
   request.on('data', (chunk) => chunks.push(chunk));
   request.on('end', () => {
     const body = Buffer.concat(chunks);
-    if (request.method !== 'POST' || request.url !== '/services/binary') {
+    const chunked = request.url === '/services/binary?reply=chunked';
+    if (request.method !== 'POST' || (request.url !== '/services/binary' && !chunked)) {
       response.writeHead(404);
       return response.end();
     }
@@ -36,7 +46,7 @@ const server = http.createServer((request, response) => {
       response.writeHead(400);
       return response.end();
     }
-    waiting.push({ body, response });
+    waiting.push({ body, response, chunked });
     if (waiting.length === 1) socket.send(body);
   });
 });

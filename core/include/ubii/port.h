@@ -9,7 +9,9 @@
  * wait(), which blocks at most the time it is given. None is called from two threads at once.
  *
  * Memory: the port object is owned by the application and outlives the node. A received message
- * is lent to the core until the next receive() or close() on that channel. */
+ * is lent to the core until the next receive() or close() on that channel, and on the SERVICE
+ * channel also until the next send_begin() (a reply is done with before the next request, so a
+ * port may keep both in one buffer). */
 
 #include <stdbool.h>
 #include <stddef.h>

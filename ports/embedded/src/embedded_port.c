@@ -26,7 +26,7 @@ void ubii__embedded_error(ubii_embedded_port *port, const char *what)
 
 bool ubii__embedded_queue(ubii__embedded_channel *ch, const void *bytes, size_t size)
 {
-    if (ch->tx_used + size > sizeof ch->tx) {
+    if (ch->tx_used + size > UBII_EMBEDDED_BUFFER) {
         return false;
     }
     memcpy(ch->tx + ch->tx_used, bytes, size);
@@ -58,6 +58,34 @@ static const protocol_driver *driver_of(const ubii__embedded_channel *ch)
     }
 }
 
+static bool shares_buffer(const ubii__embedded_channel *ch)
+{
+    return ch->rx == ch->tx;
+}
+
+/* A channel sharing one buffer reads only once its request is out: the peer answers after it. */
+static bool wants_input(const ubii__embedded_channel *ch)
+{
+    return !shares_buffer(ch) || ch->tx_used == 0;
+}
+
+static short poll_events(const ubii__embedded_channel *ch)
+{
+    bool writing = ch->phase == PHASE_CONNECTING || ch->tx_sent < ch->tx_used;
+    return (short)((wants_input(ch) ? POLLIN : 0) | (writing ? POLLOUT : 0));
+}
+
+/* The pointers are set again whenever a channel opens, so that they follow the port object even
+ * if the application copied it between init and start. */
+static void bind_buffers(ubii_embedded_port *port)
+{
+    ubii__embedded_channel *service = &port->channels[UBII_CHANNEL_SERVICE];
+    ubii__embedded_channel *topic = &port->channels[UBII_CHANNEL_TOPIC];
+    service->rx = service->tx = port->service_buffer;
+    topic->rx = port->topic_rx;
+    topic->tx = port->topic_tx;
+}
+
 static void reset_connection(ubii__embedded_channel *ch)
 {
     if (ch->fd >= 0) {
@@ -72,6 +100,8 @@ static void reset_connection(ubii__embedded_channel *ch)
     ch->lent = false;
     ch->header_room = 0;
     ch->discard = 0;
+    ch->body_size = 0;
+    ch->body_left = 0;
 }
 
 static void lose(ubii_embedded_port *port, ubii__embedded_channel *ch, const char *why)
@@ -106,32 +136,34 @@ static ubii_status start_connect(ubii_embedded_port *port, ubii__embedded_channe
     return UBII_OK;
 }
 
-/* "scheme://a.b.c.d:port/path" into the channel; the scheme's length is returned in *skip. */
-static bool parse_url(const char *url, size_t skip, ubii__embedded_channel *ch)
+/* "scheme://a.b.c.d:port/path" after the scheme's `skip` characters, into the channel. Returns
+ * NULL, or what is wrong with the URL. */
+static const char *parse_url(const char *url, size_t skip, ubii__embedded_channel *ch)
 {
+    static const char *const malformed = "URL must be scheme://IPv4:port[/path]";
     const char *host = url + skip;
     size_t host_length = strcspn(host, ":/");
     char ip[16];
     if (host_length == 0 || host_length >= sizeof ip || host[host_length] != ':') {
-        return false;
+        return malformed;
     }
     memcpy(ip, host, host_length);
     ip[host_length] = '\0';
     if (inet_pton(AF_INET, ip, &ch->address) != 1) {
-        return false;
+        return malformed;
     }
     char *end;
-    long port = strtol(host + host_length + 1, &end, 10);
-    if (port <= 0 || port > 65535 || (*end != '\0' && *end != '/')) {
-        return false;
+    long number = strtol(host + host_length + 1, &end, 10);
+    if (number <= 0 || number > 65535 || (*end != '\0' && *end != '/')) {
+        return malformed;
     }
-    ch->port = (uint16_t)port;
+    ch->port = (uint16_t)number;
     const char *path = *end == '/' ? end : "/";
     if (strlen(path) >= sizeof ch->path) {
-        return false;
+        return "URL path longer than UBII_EMBEDDED_MAX_PATH allows";
     }
     strcpy(ch->path, path);
-    return true;
+    return NULL;
 }
 
 static void close_channel(void *context, ubii_channel which)
@@ -154,6 +186,7 @@ static ubii_status open_channel(void *context, ubii_channel which, const char *u
         return UBII_ERR_INVALID_ARGUMENT;
     }
     close_channel(port, which);
+    bind_buffers(port);
     ubii__embedded_channel *ch = &port->channels[which];
     bool topic = which == UBII_CHANNEL_TOPIC;
     size_t skip;
@@ -171,14 +204,16 @@ static ubii_status open_channel(void *context, ubii_channel which, const char *u
         ubii__embedded_error(port, "URL scheme not supported by the embedded port");
         return UBII_ERR_UNSUPPORTED;
     }
-    if (!parse_url(url, skip, ch)) {
+    const char *url_error = parse_url(url, skip, ch);
+    if (url_error != NULL) {
         ch->protocol = PROTOCOL_NONE;
-        ubii__embedded_error(port, "URL must be scheme://IPv4:port[/path]");
+        ubii__embedded_error(port, url_error);
         return UBII_ERR_INVALID_ARGUMENT;
     }
     if (topic) {
         if (client_id == NULL || client_id[0] == '\0' || strlen(client_id) >= sizeof ch->identity) {
             ch->protocol = PROTOCOL_NONE;
+            ubii__embedded_error(port, "client id missing or too long");
             return UBII_ERR_INVALID_ARGUMENT;
         }
         strcpy(ch->identity, client_id);
@@ -188,6 +223,8 @@ static ubii_status open_channel(void *context, ubii_channel which, const char *u
                                    strchr(ch->path, '?') ? "&" : "?", client_id);
             if (written < 0 || (size_t)written >= sizeof ch->path - used) {
                 ch->protocol = PROTOCOL_NONE;
+                ubii__embedded_error(port, "URL path with ?clientID= longer than "
+                                           "UBII_EMBEDDED_MAX_PATH allows");
                 return UBII_ERR_INVALID_ARGUMENT;
             }
         }
@@ -217,6 +254,12 @@ static void flush(ubii_embedded_port *port, ubii__embedded_channel *ch)
     }
 }
 
+static void drop_front(ubii__embedded_channel *ch, size_t consumed)
+{
+    memmove(ch->rx, ch->rx + consumed, ch->rx_used - consumed);
+    ch->rx_used -= consumed;
+}
+
 /* Moves the handshake along; data messages are left for receive(). */
 static void advance_handshake(ubii_embedded_port *port, ubii__embedded_channel *ch)
 {
@@ -233,8 +276,7 @@ static void advance_handshake(ubii_embedded_port *port, ubii__embedded_channel *
         if (result != PARSE_SKIP) {
             return;
         }
-        memmove(ch->rx, ch->rx + consumed, ch->rx_used - consumed);
-        ch->rx_used -= consumed;
+        drop_front(ch, consumed);
     }
 }
 
@@ -255,8 +297,8 @@ static void on_connected(ubii_embedded_port *port, ubii__embedded_channel *ch)
 
 static void read_input(ubii_embedded_port *port, ubii__embedded_channel *ch)
 {
-    while (ch->fd >= 0 && ch->rx_used < sizeof ch->rx) {
-        ssize_t got = recv(ch->fd, ch->rx + ch->rx_used, sizeof ch->rx - ch->rx_used, 0);
+    while (ch->fd >= 0 && wants_input(ch) && ch->rx_used < UBII_EMBEDDED_BUFFER) {
+        ssize_t got = recv(ch->fd, ch->rx + ch->rx_used, UBII_EMBEDDED_BUFFER - ch->rx_used, 0);
         if (got > 0) {
             size_t drop = ch->discard < (uint64_t)got ? (size_t)ch->discard : (size_t)got;
             if (drop > 0) { /* the rest of a dropped over-size message */
@@ -296,10 +338,7 @@ static ubii_status wait_for_io(void *context, int timeout_ms)
             continue;
         }
         fds[count].fd = ch->fd;
-        fds[count].events = POLLIN;
-        if (ch->phase == PHASE_CONNECTING || ch->tx_sent < ch->tx_used) {
-            fds[count].events |= POLLOUT;
-        }
+        fds[count].events = poll_events(ch);
         fds[count].revents = 0;
         owners[count++] = ch;
     }
@@ -327,6 +366,51 @@ static ubii_channel_state channel_state(void *context, ubii_channel which)
     return (unsigned)which < UBII_CHANNEL_COUNT ? port->channels[which].state : UBII_CHANNEL_CLOSED;
 }
 
+/* The core is done with the message it was lent. */
+static void end_loan(ubii__embedded_channel *ch)
+{
+    if (!ch->lent) {
+        return;
+    }
+    memmove(ch->rx, ch->rx + ch->lent_size, ch->rx_used - ch->lent_size);
+    ch->rx_used -= ch->lent_size;
+    ch->lent = false;
+    if (ch->protocol == PROTOCOL_HTTP) {
+        reset_connection(ch); /* one request per connection */
+    }
+}
+
+/* A REQ peer sends nothing between replies but ZMTP commands; anything else left in a shared
+ * buffer is dropped and counted before a request takes the buffer. False while something is only
+ * partly there. */
+static bool clear_input(ubii_embedded_port *port, ubii__embedded_channel *ch)
+{
+    if (ch->protocol == PROTOCOL_HTTP) {
+        ch->rx_used = 0; /* from a connection that is over: each request has its own */
+        return true;
+    }
+    const protocol_driver *driver = driver_of(ch);
+    while (ch->rx_used > 0) {
+        const uint8_t *data;
+        size_t size, consumed = 0;
+        unsigned flags;
+        parse_result result = driver->parse(port, ch, &data, &size, &flags, &consumed);
+        if (result == PARSE_NEED_MORE) {
+            return false;
+        }
+        if (result == PARSE_ERROR) {
+            port->decode_errors++;
+            lose(port, ch, NULL);
+            return false;
+        }
+        if (result != PARSE_SKIP) {
+            port->decode_errors++; /* a message nobody asked for */
+        }
+        drop_front(ch, consumed);
+    }
+    return true;
+}
+
 static ubii_status send_begin(void *context, ubii_channel which, size_t size, uint8_t **buffer)
 {
     ubii_embedded_port *port = context;
@@ -337,8 +421,13 @@ static ubii_status send_begin(void *context, ubii_channel which, size_t size, ui
     if (ch->state != UBII_CHANNEL_OPEN && ch->state != UBII_CHANNEL_CONNECTING) {
         return UBII_ERR_NOT_CONNECTED;
     }
-    if (size > UBII_EMBEDDED_MAX_MESSAGE) {
+    size_t header = driver_of(ch)->header_size(ch, size);
+    if (size > UBII_EMBEDDED_MAX_MESSAGE || header + size > UBII_EMBEDDED_BUFFER) {
         return UBII_ERR_TOO_LARGE;
+    }
+    if (shares_buffer(ch)) {
+        /* The next request: the previous reply has been delivered (port.h). */
+        end_loan(ch);
     }
     if (ch->protocol == PROTOCOL_HTTP && ch->fd >= 0) {
         return UBII_ERR_WOULD_BLOCK; /* one request at a time */
@@ -346,10 +435,12 @@ static ubii_status send_begin(void *context, ubii_channel which, size_t size, ui
     if (ch->protocol != PROTOCOL_HTTP && ch->phase != PHASE_OPEN) {
         return UBII_ERR_WOULD_BLOCK; /* the handshake goes first; the core tries again */
     }
-    size_t header = driver_of(ch)->header_size(ch, size);
-    if (ch->tx_used + header + size > sizeof ch->tx) {
+    if (shares_buffer(ch) && !clear_input(port, ch)) {
+        return UBII_ERR_WOULD_BLOCK;
+    }
+    if (ch->tx_used + header + size > UBII_EMBEDDED_BUFFER) {
         flush(port, ch);
-        if (ch->tx_used + header + size > sizeof ch->tx) {
+        if (ch->tx_used + header + size > UBII_EMBEDDED_BUFFER) {
             return UBII_ERR_WOULD_BLOCK;
         }
     }
@@ -374,9 +465,6 @@ static ubii_status send_commit(void *context, ubii_channel which, unsigned flags
     ch->tx_used = ch->reserved_at + ch->reserved;
     ch->header_room = 0;
     if (ch->protocol == PROTOCOL_HTTP) {
-        /* A new request: the previous reply (delivered by now) is done with. */
-        ch->lent = false;
-        ch->rx_used = 0;
         return start_connect(port, ch);
     }
     /* Not sent yet: messages committed before the next wait go out together, which saves the
@@ -392,14 +480,7 @@ static ubii_status receive(void *context, ubii_channel which, const uint8_t **da
         return UBII_ERR_INVALID_ARGUMENT;
     }
     ubii__embedded_channel *ch = &port->channels[which];
-    if (ch->lent) { /* the previous message is done with */
-        memmove(ch->rx, ch->rx + ch->lent_size, ch->rx_used - ch->lent_size);
-        ch->rx_used -= ch->lent_size;
-        ch->lent = false;
-        if (ch->protocol == PROTOCOL_HTTP) {
-            reset_connection(ch); /* one request per connection */
-        }
-    }
+    end_loan(ch);
     if (ch->phase != PHASE_OPEN || ch->protocol == PROTOCOL_NONE) {
         return UBII_ERR_WOULD_BLOCK;
     }
@@ -408,8 +489,7 @@ static ubii_status receive(void *context, ubii_channel which, const uint8_t **da
         size_t consumed = 0;
         parse_result result = driver->parse(port, ch, data, size, flags, &consumed);
         if (result == PARSE_SKIP) {
-            memmove(ch->rx, ch->rx + consumed, ch->rx_used - consumed);
-            ch->rx_used -= consumed;
+            drop_front(ch, consumed);
             flush(port, ch); /* a WebSocket PONG may have been queued */
             continue;
         }
@@ -419,8 +499,7 @@ static ubii_status receive(void *context, ubii_channel which, const uint8_t **da
             return UBII_OK;
         }
         if (result == PARSE_TOO_LARGE) {
-            memmove(ch->rx, ch->rx + consumed, ch->rx_used - consumed);
-            ch->rx_used -= consumed;
+            drop_front(ch, consumed);
             port->decode_errors++;
             if (ch->protocol == PROTOCOL_HTTP) {
                 reset_connection(ch);
@@ -448,9 +527,7 @@ static int poll_fds(void *context, ubii_pollfd *fds, int capacity)
         }
         if (count < capacity) {
             fds[count].fd = ch->fd;
-            fds[count].events =
-                (short)(POLLIN |
-                        (ch->phase == PHASE_CONNECTING || ch->tx_sent < ch->tx_used ? POLLOUT : 0));
+            fds[count].events = poll_events(ch);
         }
         count++;
     }
@@ -482,6 +559,7 @@ ubii_status ubii_embedded_port_init(ubii_embedded_port *port, ubii_embedded_plat
     }
     memset(port, 0, sizeof *port);
     port->platform = platform;
+    bind_buffers(port);
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
         port->channels[i].fd = -1;
     }

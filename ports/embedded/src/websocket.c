@@ -281,8 +281,9 @@ static void send_control(ubii_embedded_port *port, ubii__embedded_channel *ch, i
                          const uint8_t *payload, size_t size)
 {
     size_t header = header_size(ch, size);
-    if (size > 125 || ch->reserved != 0 || ch->tx_used + header + size > sizeof ch->tx) {
-        return; /* no room now: the peer will ask again */
+    /* Not while the core writes a message into tx (header_room), nor without room. */
+    if (size > 125 || ch->header_room != 0 || ch->tx_used + header + size > UBII_EMBEDDED_BUFFER) {
+        return; /* the peer will ask again */
     }
     size_t at = ch->tx_used + header;
     memcpy(ch->tx + at, payload, size);

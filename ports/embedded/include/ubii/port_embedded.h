@@ -29,9 +29,17 @@ extern "C" {
 #define UBII_EMBEDDED_MAX_MESSAGE 2048
 #endif
 
-/* Room for frame headers and HTTP/WebSocket handshake text next to a message. */
+/* Longest path (with query) of a URL, including the NUL: "/services/binary", or the WebSocket
+ * path with "?clientID=<36-character id>" appended. A longer URL is refused by open. */
+#ifndef UBII_EMBEDDED_MAX_PATH
+#define UBII_EMBEDDED_MAX_PATH 80
+#endif
+
+/* Room next to a message for its framing. ZMTP needs 11 bytes and WebSocket 14; the HTTP request
+ * head needs 144 plus the path, so this default lets every protocol carry a message of
+ * UBII_EMBEDDED_MAX_MESSAGE. Handshakes use the whole buffer (it holds no message then). */
 #ifndef UBII_EMBEDDED_HEADROOM
-#define UBII_EMBEDDED_HEADROOM 512
+#define UBII_EMBEDDED_HEADROOM (UBII_EMBEDDED_MAX_PATH + 144)
 #endif
 
 #define UBII_EMBEDDED_BUFFER (UBII_EMBEDDED_MAX_MESSAGE + UBII_EMBEDDED_HEADROOM)
@@ -54,30 +62,38 @@ typedef struct ubii__embedded_channel {
     uint8_t protocol; /* ZMTP, WebSocket or HTTP */
     uint8_t phase;    /* connecting, handshaking, open */
     uint8_t zmq_type; /* REQ or DEALER */
-    uint8_t step;     /* within the handshake */
+    uint8_t step;     /* within the handshake, or within an HTTP reply */
     ubii_channel_state state;
     uint32_t address; /* IPv4, network order */
     uint16_t port;
-    char path[128];
-    char identity[48];
+    char path[UBII_EMBEDDED_MAX_PATH];
+    char identity[48]; /* the client id: the schema's Client.id max_size */
     char websocket_key[32];
     uint64_t discard; /* bytes of an over-size message still to skip as they arrive */
     bool lent;        /* rx[0..lent_size) holds the message lent to the core */
     size_t lent_size; /* bytes to drop from rx when the loan ends */
-    uint8_t rx[UBII_EMBEDDED_BUFFER];
+    /* Both point into the port. The service channel's are the same buffer: REQ and HTTP carry a
+     * request, then its reply, so the buffer holds one direction at a time. */
+    uint8_t *rx;
+    uint8_t *tx;
     size_t rx_used;
-    uint8_t tx[UBII_EMBEDDED_BUFFER];
     size_t tx_used;     /* bytes queued */
     size_t tx_sent;     /* of which already written to the socket */
     size_t reserved;    /* send_begin: payload size reserved */
     size_t reserved_at; /* offset of the reserved payload in tx */
     size_t header_room; /* bytes kept before it for the frame header */
-    int http_status;
+    size_t body_size;   /* HTTP: reply body bytes gathered at the front of rx */
+    size_t body_left;   /* HTTP: body bytes still to come (of the reply, or of the chunk) */
 } ubii__embedded_channel;
 
+/* The application owns it; it must not be moved while a channel is open (its channels point into
+ * its own buffers). */
 typedef struct ubii_embedded_port {
     ubii_embedded_platform platform;
     ubii__embedded_channel channels[UBII_CHANNEL_COUNT];
+    uint8_t service_buffer[UBII_EMBEDDED_BUFFER];
+    uint8_t topic_rx[UBII_EMBEDDED_BUFFER];
+    uint8_t topic_tx[UBII_EMBEDDED_BUFFER];
     uint32_t decode_errors; /* malformed frames from the master, dropped */
     char last_error[96];
 } ubii_embedded_port;
