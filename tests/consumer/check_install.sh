@@ -4,6 +4,7 @@
 # pkg-config.
 #   check_install.sh BUILD_DIR WORK
 set -euo pipefail
+# grep reads its whole input (no -q): an early exit would fail the writer with SIGPIPE under pipefail.
 build=${1:?} work=${2:?}
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work"
@@ -15,13 +16,13 @@ cmake --install "$build" --prefix "$prefix" >"$work/install.log"
 cmake -S "$here" -B "$work/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" >"$work/configure.log"
 cmake --build "$work/cmake-build" >"$work/build.log"
 "$work/cmake-build/consumer_static"
-if nm -D "$work/cmake-build/consumer_static" 2>/dev/null | grep -q ubii_; then
+if nm -D "$work/cmake-build/consumer_static" 2>/dev/null | grep ubii_ >/dev/null; then
   echo "check_install: consumer_static resolves libubii symbols dynamically" >&2
   exit 1
 fi
 libdir=$(dirname "$(find "$prefix" -name 'libubii.so' | head -n 1)")
 LD_LIBRARY_PATH="$libdir" "$work/cmake-build/consumer_shared"
-LD_LIBRARY_PATH="$libdir" ldd "$work/cmake-build/consumer_shared" | grep -q "$libdir/libubii.so" || {
+LD_LIBRARY_PATH="$libdir" ldd "$work/cmake-build/consumer_shared" | grep -F "$libdir/libubii.so" >/dev/null || {
   echo "check_install: consumer_shared does not load $libdir/libubii.so" >&2
   exit 1
 }
