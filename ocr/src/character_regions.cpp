@@ -36,28 +36,31 @@ bool side_by_side(const cv::Rect &a, const cv::Rect &b)
     return a.x + a.width <= b.x || b.x + b.width <= a.x;
 }
 
-std::vector<cv::Rect> without_duplicates(std::vector<cv::Rect> boxes)
+std::vector<CharacterCandidate> without_duplicates(const std::vector<cv::Rect> &boxes)
 {
     // Larger first, so that the outermost report of a region is the one kept.
-    std::sort(boxes.begin(), boxes.end(),
-              [](const cv::Rect &a, const cv::Rect &b) { return a.area() > b.area(); });
-    std::vector<cv::Rect> kept;
-    for (const auto &box : boxes) {
-        const bool duplicate = std::any_of(kept.begin(), kept.end(), [&](const cv::Rect &other) {
-            return overlap(box, other) >= duplicate_overlap;
+    std::vector<std::size_t> order(boxes.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return boxes[a].area() > boxes[b].area(); });
+    std::vector<CharacterCandidate> kept;
+    for (const std::size_t i : order) {
+        const bool duplicate = std::any_of(kept.begin(), kept.end(), [&](const CharacterCandidate &other) {
+            return overlap(boxes[i], other.box) >= duplicate_overlap;
         });
         if (!duplicate)
-            kept.push_back(box);
+            kept.push_back({boxes[i], {i}});
     }
     return kept;
 }
 
-bool holds_two_side_by_side(const cv::Rect &box, const std::vector<cv::Rect> &candidates)
+bool holds_two_side_by_side(const cv::Rect &box, const std::vector<CharacterCandidate> &candidates)
 {
     std::vector<cv::Rect> inside;
     for (const auto &other : candidates)
-        if (contains(box, other))
-            inside.push_back(other);
+        if (contains(box, other.box))
+            inside.push_back(other.box);
     for (std::size_t i = 0; i < inside.size(); ++i)
         for (std::size_t j = i + 1; j < inside.size(); ++j)
             if (side_by_side(inside[i], inside[j]))
@@ -67,36 +70,41 @@ bool holds_two_side_by_side(const cv::Rect &box, const std::vector<cv::Rect> &ca
 
 } // namespace
 
-std::vector<cv::Rect> character_candidates(const std::vector<cv::Rect> &regions)
+std::vector<CharacterCandidate> character_candidates(const std::vector<cv::Rect> &regions)
 {
-    const std::vector<cv::Rect> distinct = without_duplicates(regions);
+    const std::vector<CharacterCandidate> distinct = without_duplicates(regions);
 
     // Small regions (dots, specks) are kept aside: they may still be the dot of an i or j.
-    std::vector<cv::Rect> shaped, small;
-    for (const auto &box : distinct)
-        (character_shaped(box) ? shaped : small).push_back(box);
+    std::vector<CharacterCandidate> shaped, small;
+    for (const auto &candidate : distinct)
+        (character_shaped(candidate.box) ? shaped : small).push_back(candidate);
 
-    std::vector<cv::Rect> characters;
-    for (const auto &box : shaped)
-        if (!holds_two_side_by_side(box, shaped))
-            characters.push_back(box);
+    std::vector<CharacterCandidate> characters;
+    for (const auto &candidate : shaped)
+        if (!holds_two_side_by_side(candidate.box, shaped))
+            characters.push_back(candidate);
 
-    std::vector<cv::Rect> outermost;
-    for (const auto &box : characters) {
-        const bool inner = std::any_of(characters.begin(), characters.end(),
-                                       [&](const cv::Rect &other) { return contains(other, box); });
+    std::vector<CharacterCandidate> outermost;
+    for (const auto &candidate : characters) {
+        const bool inner = std::any_of(characters.begin(), characters.end(), [&](const CharacterCandidate &other) {
+            return contains(other.box, candidate.box);
+        });
         if (!inner)
-            outermost.push_back(box);
+            outermost.push_back(candidate);
     }
 
-    for (auto &stem : outermost) {
-        for (const auto &dot : small) {
+    for (auto &character : outermost) {
+        cv::Rect &stem = character.box;
+        for (const auto &small_region : small) {
+            const cv::Rect &dot = small_region.box;
             const bool above = dot.y + dot.height <= stem.y &&
                                stem.y - (dot.y + dot.height) <= dot_reach * stem.height;
             const bool over = dot.x >= stem.x - dot.width / 2 &&
                               dot.x + dot.width <= stem.x + stem.width + dot.width / 2;
-            if (above && over && dot.width <= stem.width * 2)
+            if (above && over && dot.width <= stem.width * 2) {
                 stem |= dot;
+                character.regions.push_back(small_region.regions.front());
+            }
         }
     }
     return outermost;

@@ -1,6 +1,7 @@
 #ifndef UBII_OCR_SRC_CHARACTER_REGIONS_HPP
 #define UBII_OCR_SRC_CHARACTER_REGIONS_HPP
 
+#include <cstddef>
 #include <vector>
 
 #include <opencv2/core/types.hpp>
@@ -17,7 +18,11 @@ namespace ubii::ocr::detail
 //   3. boxes holding two side-by-side candidates are words or lines, not characters, and go;
 //   4. boxes inside another candidate (holes, inner strokes) go;
 //   5. a dot just above a stem joins it (i, j).
-std::vector<cv::Rect> character_candidates(const std::vector<cv::Rect> &regions);
+struct CharacterCandidate {
+    cv::Rect box;
+    std::vector<std::size_t> regions; // indices of the MSER regions that make it up
+};
+std::vector<CharacterCandidate> character_candidates(const std::vector<cv::Rect> &regions);
 
 } // namespace ubii::ocr::detail
 

@@ -65,6 +65,27 @@ cv::Mat upright_crop(const cv::Mat &gray, const cv::RotatedRect &box, int paddin
     return crop;
 }
 
+// Non-maximum suppression compares boxes by intersection over union, so a small box lying inside a
+// large one survives it (a word inside its line, a fragment inside its word). Such boxes add only
+// work and duplicated text: drop a box when most of it lies inside a larger one.
+std::vector<cv::RotatedRect> without_contained(const std::vector<cv::RotatedRect> &boxes)
+{
+    constexpr double contained_fraction = 0.8;
+    std::vector<cv::RotatedRect> kept;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const cv::Rect inner = boxes[i].boundingRect();
+        bool contained = false;
+        for (std::size_t j = 0; j < boxes.size() && !contained; ++j) {
+            const cv::Rect outer = boxes[j].boundingRect();
+            contained = j != i && outer.area() > inner.area() &&
+                        (inner & outer).area() >= contained_fraction * inner.area();
+        }
+        if (!contained)
+            kept.push_back(boxes[i]);
+    }
+    return kept;
+}
+
 } // namespace
 
 struct EastPipeline::Impl {
@@ -94,7 +115,7 @@ std::vector<TextBox> EastPipeline::recognise(const cv::Mat &image)
 
     const cv::Rect frame(0, 0, gray.cols, gray.rows);
     std::vector<TextBox> words;
-    for (const auto &box : boxes) {
+    for (const auto &box : without_contained(boxes)) {
         const cv::Rect bounds = box.boundingRect() & frame;
         if (bounds.empty())
             continue;

@@ -43,17 +43,24 @@ std::vector<TextBox> MserPipeline::recognise(const cv::Mat &image)
     const bool colour = impl_->options.use_colour && image.channels() != 1;
     impl_->mser->detectRegions(colour ? detail::to_bgr(image) : gray, regions, region_boxes);
 
-    // One SetImage per frame; each character is then a rectangle of it, which spares a copy per
-    // character.
-    impl_->engine.set_image(gray);
-    const cv::Rect frame(0, 0, gray.cols, gray.rows);
+    // Each character is read from its own region's pixels, drawn black on white with the padding
+    // around it. Cut from the frame instead, the padding takes in parts of the neighbouring
+    // letters, which single-character mode then reads as extra characters. This also turns light
+    // text on a dark ground into dark on light.
     const int padding = impl_->options.padding_px;
     std::vector<TextBox> characters;
-    for (const auto &box : detail::character_candidates(region_boxes)) {
-        const cv::Rect padded =
-            (box + cv::Point(-padding, -padding) + cv::Size(2 * padding, 2 * padding)) & frame;
-        impl_->engine.set_rectangle(padded);
-        if (auto character = impl_->engine.read_as_one(box))
+    for (const auto &candidate : detail::character_candidates(region_boxes)) {
+        const cv::Point origin = candidate.box.tl() - cv::Point(padding, padding);
+        cv::Mat patch(candidate.box.height + 2 * padding, candidate.box.width + 2 * padding, CV_8UC1,
+                      cv::Scalar(255));
+        for (const std::size_t region : candidate.regions)
+            for (const auto &pixel : regions[region])
+                patch.at<std::uint8_t>(pixel - origin) = 0;
+        impl_->engine.set_image(patch);
+        auto character = impl_->options.tesseract.segmentation == Segmentation::single_char
+                             ? impl_->engine.read_best_symbol(candidate.box)
+                             : impl_->engine.read_as_one(candidate.box);
+        if (character)
             characters.push_back(std::move(*character));
     }
     return detail::group_into_words(characters, impl_->options.word_gap);

@@ -133,4 +133,26 @@ std::optional<TextBox> TesseractEngine::read_as_one(const cv::Rect &box)
     return TextBox{std::move(joined), confidence, box, std::nullopt};
 }
 
+std::optional<TextBox> TesseractEngine::read_best_symbol(const cv::Rect &box)
+{
+    if (!recognise())
+        return std::nullopt;
+    const std::unique_ptr<tesseract::ResultIterator> symbol(api_->GetIterator());
+    if (!symbol)
+        return std::nullopt;
+    constexpr auto level = tesseract::RIL_SYMBOL;
+    std::optional<TextBox> best;
+    do {
+        if (symbol->Empty(level))
+            continue;
+        const float confidence = symbol->Confidence(level);
+        if (confidence < options_.min_confidence || (best && confidence <= best->confidence))
+            continue;
+        std::string text = trimmed(TesseractText(symbol->GetUTF8Text(level)).get());
+        if (!text.empty())
+            best = TextBox{std::move(text), confidence, box, std::nullopt};
+    } while (symbol->Next(level));
+    return best;
+}
+
 } // namespace ubii::ocr::detail

@@ -18,7 +18,7 @@ bool same_word(const cv::Rect &a, const cv::Rect &b, float max_gap)
     if (overlap_bottom - overlap_top < min_line_overlap * shorter)
         return false;
     const int gap = std::max(a.x, b.x) - std::min(a.x + a.width, b.x + b.width);
-    return static_cast<float>(gap) <= max_gap * static_cast<float>(std::max(a.height, b.height));
+    return static_cast<float>(gap) <= max_gap * static_cast<float>(shorter);
 }
 
 struct DisjointSets {

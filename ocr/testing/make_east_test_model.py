@@ -11,9 +11,11 @@ to the EAST decoder in name order and takes the first as geometry, hence the nam
 The weights are set by hand, not trained: the network finds dark strokes that are darker than
 their surroundings, joins neighbouring strokes into blobs (a word, or a few close words), measures
 each blob's half-width and half-height by repeated erosion, and scores only the cells at a blob's
-centre, whose geometry spans the whole blob. So model loading, the forward pass, decoding,
+centre, whose geometry spans the whole blob; blobs narrower than high (strokes of clutter) are not
+scored. So model loading, the forward pass, decoding,
 non-maximum suppression and recognition all run for real and find real words on dark-on-light
-text of roughly 10-40 px letter height. It is no substitute for the public EAST model
+text whose capitals are roughly 12-30 px high at the network's input size (choose the
+EAST input size accordingly). It is no substitute for the public EAST model
 (frozen_east_text_detection.pb): accuracy figures for EAST need that model.
 
 Needs Debian's python3-onnx (run with /usr/bin/python3).
@@ -31,7 +33,7 @@ DARKNESS_OFFSET = 12.0   # grey levels below the local mean before a cell counts
 DARKNESS_RANGE = 30.0    # grey levels over which ink goes from 0 to 1
 DENSITY_WINDOW = (3, 3)  # cells averaged to bridge the gaps between letters
 DENSITY_THRESHOLD = 0.12
-MAX_HALF_WIDTH = 48      # cells: blobs up to 384 px wide are measured exactly
+MAX_HALF_WIDTH = 100     # cells: blobs (words, or lines) up to 800 px wide are measured exactly
 MAX_HALF_HEIGHT = 16     # cells: up to 128 px high
 
 
@@ -111,15 +113,20 @@ def build():
     ink = g.saturate(g.scale(darker_by, 1.0 / DARKNESS_RANGE, -DARKNESS_OFFSET / DARKNESS_RANGE))
     density = g.average_pool(ink, DENSITY_WINDOW)
     blob = g.saturate(g.scale(density, 50.0, -50.0 * DENSITY_THRESHOLD))
-    blob = g.max_pool(blob, (3, 1))  # one cell up and down: room for ascenders and descenders
+    # Closing (dilate, then erode) fills the gaps between letters and holes in them; one more cell
+    # up and down leaves room for ascenders and descenders.
+    blob = g.scale(g.max_pool(g.scale(g.max_pool(blob, (3, 3)), -1.0), (3, 3)), -1.0)
+    blob = g.max_pool(blob, (3, 1))
 
     half_width = g.half_extent(blob, (1, 3), MAX_HALF_WIDTH)
     half_height = g.half_extent(blob, (3, 1), MAX_HALF_HEIGHT)
 
     centre = g.mul(g.is_centre(half_width, (1, 5)), g.is_centre(half_height, (5, 1)))
-    big_enough = g.mul(g.saturate(g.scale(half_width, 1.0, -1.0)),
-                       g.saturate(g.scale(half_height, 1.0, -1.0)))
-    g.op("Mul", [g.mul(blob, centre), big_enough], output="scores")
+    # Words are at least 3 cells high and wider than high; thin strokes of clutter (lines, rims)
+    # are not.
+    big_enough = g.saturate(g.scale(half_height, 1.0, -1.0))
+    wide_enough = g.saturate(g.scale(g.sub(half_width, half_height), 1.0, 1.0))
+    g.op("Mul", [g.mul(blob, centre), g.mul(big_enough, wide_enough)], output="scores")
 
     # A cell covers input pixels [CELL*x, CELL*x + CELL); the decoder places it at CELL*x.
     top = g.scale(half_height, CELL, -CELL)

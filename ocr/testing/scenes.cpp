@@ -8,7 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-namespace ubii::ocr::testing
+namespace ubii::ocr::testdata
 {
 namespace
 {
@@ -39,10 +39,12 @@ std::vector<GroundTruthWord> write_lines(cv::Mat &canvas, const std::vector<std:
         std::istringstream split(line);
         std::string word;
         while (split >> word) {
-            cv::Mat ink = cv::Mat::zeros(canvas.size(), CV_8UC1);
-            face->putText(ink, word, position, height, cv::Scalar(255), -1, cv::LINE_AA, false);
+            // FreeType draws on 3-channel images only.
+            cv::Mat ink = cv::Mat::zeros(canvas.size(), CV_8UC3), ink_gray;
+            face->putText(ink, word, position, height, cv::Scalar::all(255), -1, cv::LINE_AA, false);
             face->putText(canvas, word, position, height, colour, -1, cv::LINE_AA, false);
-            words.push_back({word, cv::boundingRect(ink)});
+            cv::cvtColor(ink, ink_gray, cv::COLOR_BGR2GRAY);
+            words.push_back({word, cv::boundingRect(ink_gray)});
             position.x += face->getTextSize(word, height, -1, &baseline).width + space;
         }
         position.x = origin.x;
@@ -172,6 +174,18 @@ Scene webcam_scene()
     return scene;
 }
 
+cv::Size east_test_input_size(const Scene &scene)
+{
+    constexpr double wanted_height_px = 20.0;
+    std::vector<int> heights;
+    for (const auto &word : scene.words)
+        heights.push_back(word.box.height);
+    std::nth_element(heights.begin(), heights.begin() + static_cast<long>(heights.size() / 2), heights.end());
+    const double scale = wanted_height_px / heights[heights.size() / 2];
+    const auto to_32 = [&](int side) { return std::max(32, static_cast<int>(side * scale + 16) / 32 * 32); };
+    return {to_32(scene.image.cols), to_32(scene.image.rows)};
+}
+
 std::vector<Scene> all_scenes()
 {
     return {baseline_scene(), sign_scene(), webcam_scene()};
@@ -229,4 +243,4 @@ std::string describe(const WordScore &score)
     return text.str();
 }
 
-} // namespace ubii::ocr::testing
+} // namespace ubii::ocr::testdata

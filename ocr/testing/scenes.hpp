@@ -20,7 +20,7 @@
 
 #include "ubii/ocr/text_box.hpp"
 
-namespace ubii::ocr::testing
+namespace ubii::ocr::testdata
 {
 
 struct GroundTruthWord {
@@ -38,6 +38,11 @@ Scene baseline_scene();
 Scene sign_scene();
 Scene webcam_scene();
 std::vector<Scene> all_scenes();
+
+// The input size at which the generated EAST test network sees this scene's text at the scale it
+// was built for (capitals about 20 px high), in multiples of 32. The public EAST model copes with
+// many scales; the hand-set test network with only a few.
+cv::Size east_test_input_size(const Scene &scene);
 
 // Word-level precision and recall. A recognised word counts as correct when, after keeping only
 // letters and digits and ignoring case, it equals a not yet matched ground-truth word and the two
@@ -62,6 +67,6 @@ WordScore score_words(const std::vector<TextBox> &recognised,
                       const std::vector<GroundTruthWord> &truth);
 std::string describe(const WordScore &score);
 
-} // namespace ubii::ocr::testing
+} // namespace ubii::ocr::testdata
 
 #endif
