@@ -5,7 +5,8 @@
 #include <cmath>
 #include <numeric>
 
-namespace ubii::bench {
+namespace ubii::bench
+{
 
 FrameStats summarise(std::vector<double> times_ms)
 {
@@ -35,7 +36,8 @@ FrameStats time_frames(int warm_up, int count, const std::function<void()> &fram
     for (int i = 0; i < count; ++i) {
         const auto start = std::chrono::steady_clock::now();
         frame();
-        const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+        const std::chrono::duration<double, std::milli> took =
+            std::chrono::steady_clock::now() - start;
         times_ms.push_back(took.count());
     }
     return summarise(std::move(times_ms));

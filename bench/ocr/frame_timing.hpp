@@ -4,7 +4,8 @@
 #include <functional>
 #include <vector>
 
-namespace ubii::bench {
+namespace ubii::bench
+{
 
 // Per-frame times in the thesis's table format.
 struct FrameStats {

@@ -24,7 +24,8 @@
 #include "scenes.hpp"
 #include "ubii/ocr/ocr.hpp"
 
-namespace {
+namespace
+{
 
 using ubii::bench::FrameStats;
 using ubii::bench::time_frames;
@@ -96,15 +97,19 @@ ocr::PipelineOptions options_for(ocr::PipelineKind kind, const ocr::testdata::Sc
 }
 
 // What a program would write without libubii: one TessBaseAPI, the gray frame, words read back.
-class BareTesseract {
-public:
+class BareTesseract
+{
+  public:
     explicit BareTesseract(ocr::Segmentation segmentation)
     {
         if (api_.Init(nullptr, "eng", tesseract::OEM_LSTM_ONLY) != 0)
             throw ocr::EngineError("bare TessBaseAPI: no eng traineddata");
         api_.SetPageSegMode(static_cast<tesseract::PageSegMode>(segmentation));
     }
-    ~BareTesseract() { api_.End(); }
+    ~BareTesseract()
+    {
+        api_.End();
+    }
 
     std::size_t read(const cv::Mat &gray)
     {
@@ -125,7 +130,7 @@ public:
         return words;
     }
 
-private:
+  private:
     tesseract::TessBaseAPI api_;
 };
 
@@ -181,37 +186,44 @@ int main(int argc, char **argv)
             cv::Mat gray;
             cv::cvtColor(scene.image, gray, cv::COLOR_BGR2GRAY);
             BareTesseract bare(segmentation);
-            const FrameStats bare_stats = time_frames(warm_up_frames, args.frames, [&] { bare.read(gray); });
+            const FrameStats bare_stats =
+                time_frames(warm_up_frames, args.frames, [&] { bare.read(gray); });
             const auto cli_stats = time_cli(image_path, segmentation, args.cli_runs);
 
-            for (const auto kind : {ocr::PipelineKind::pure, ocr::PipelineKind::mser, ocr::PipelineKind::east}) {
+            for (const auto kind :
+                 {ocr::PipelineKind::pure, ocr::PipelineKind::mser, ocr::PipelineKind::east}) {
                 auto pipeline = ocr::make_pipeline(options_for(kind, scene, args));
                 std::vector<ocr::TextBox> words;
-                const FrameStats stats = time_frames(warm_up_frames, args.frames,
-                                                     [&] { words = pipeline->recognise(scene.image); });
+                const FrameStats stats = time_frames(
+                    warm_up_frames, args.frames, [&] { words = pipeline->recognise(scene.image); });
                 const auto score = ocr::testdata::score_words(words, scene.words);
                 const std::string name(ocr::to_string(kind));
                 std::cout << "| " << name << " | " << scene.name
-                          << (kind == ocr::PipelineKind::pure && segmentation == ocr::Segmentation::sparse_text
+                          << (kind == ocr::PipelineKind::pure &&
+                                      segmentation == ocr::Segmentation::sparse_text
                                   ? "-sparse"
                                   : "")
                           << " | " << stats.count << " | " << fixed(stats.mean_ms, 1) << " | "
-                          << fixed(100.0 * stats.relative_std, 1) << "% | " << fixed(stats.median_ms, 1)
-                          << " | " << fixed(score.precision(), 2) << " | " << fixed(score.recall(), 2)
-                          << " | " << (cli_stats ? fixed(cli_stats->mean_ms, 1) : "n/a") << " | "
-                          << (cli_stats ? fixed(cli_stats->mean_ms / stats.mean_ms, 2) + "x" : "n/a")
+                          << fixed(100.0 * stats.relative_std, 1) << "% | "
+                          << fixed(stats.median_ms, 1) << " | " << fixed(score.precision(), 2)
+                          << " | " << fixed(score.recall(), 2) << " | "
+                          << (cli_stats ? fixed(cli_stats->mean_ms, 1) : "n/a") << " | "
+                          << (cli_stats ? fixed(cli_stats->mean_ms / stats.mean_ms, 2) + "x"
+                                        : "n/a")
                           << " | " << fixed(bare_stats.mean_ms, 1) << " | "
                           << fixed(stats.mean_ms / bare_stats.mean_ms, 3) << "x | "
                           << fixed(thesis_ms.at(name).at(scene.name), 0) << " |" << std::endl;
                 if (std::getenv("UBII_OCR_BENCH_VERBOSE") != nullptr)
-                    std::cerr << name << " " << scene.name << ": " << ocr::testdata::describe(score) << "\n";
+                    std::cerr << name << " " << scene.name << ": " << ocr::testdata::describe(score)
+                              << "\n";
             }
         }
-        std::cout << "\nCLI and bare API use PURE's settings for the scene (automatic segmentation "
-                     "for baseline, sparse text for sign and webcam, "
-                  << source_resolution_dpi
-                  << " dpi); the CLI loads the model on every run, the bare API gets the gray frame "
-                     "ready-made. Thesis figures: i5-8265U, Python.\n";
+        std::cout
+            << "\nCLI and bare API use PURE's settings for the scene (automatic segmentation "
+               "for baseline, sparse text for sign and webcam, "
+            << source_resolution_dpi
+            << " dpi); the CLI loads the model on every run, the bare API gets the gray frame "
+               "ready-made. Thesis figures: i5-8265U, Python.\n";
         return 0;
     } catch (const std::exception &error) {
         std::cerr << "ocr_bench: " << error.what() << "\n";

@@ -42,13 +42,15 @@ std::vector<CharacterCandidate> without_duplicates(const std::vector<cv::Rect> &
     std::vector<std::size_t> order(boxes.size());
     for (std::size_t i = 0; i < order.size(); ++i)
         order[i] = i;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return boxes[a].area() > boxes[b].area(); });
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return boxes[a].area() > boxes[b].area();
+    });
     std::vector<CharacterCandidate> kept;
     for (const std::size_t i : order) {
-        const bool duplicate = std::any_of(kept.begin(), kept.end(), [&](const CharacterCandidate &other) {
-            return overlap(boxes[i], other.box) >= duplicate_overlap;
-        });
+        const bool duplicate =
+            std::any_of(kept.begin(), kept.end(), [&](const CharacterCandidate &other) {
+                return overlap(boxes[i], other.box) >= duplicate_overlap;
+            });
         if (!duplicate)
             kept.push_back({boxes[i], {i}});
     }
@@ -86,9 +88,10 @@ std::vector<CharacterCandidate> character_candidates(const std::vector<cv::Rect>
 
     std::vector<CharacterCandidate> outermost;
     for (const auto &candidate : characters) {
-        const bool inner = std::any_of(characters.begin(), characters.end(), [&](const CharacterCandidate &other) {
-            return contains(other.box, candidate.box);
-        });
+        const bool inner =
+            std::any_of(characters.begin(), characters.end(), [&](const CharacterCandidate &other) {
+                return contains(other.box, candidate.box);
+            });
         if (!inner)
             outermost.push_back(candidate);
     }

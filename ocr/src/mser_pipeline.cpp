@@ -51,8 +51,8 @@ std::vector<TextBox> MserPipeline::recognise(const cv::Mat &image)
     std::vector<TextBox> characters;
     for (const auto &candidate : detail::character_candidates(region_boxes)) {
         const cv::Point origin = candidate.box.tl() - cv::Point(padding, padding);
-        cv::Mat patch(candidate.box.height + 2 * padding, candidate.box.width + 2 * padding, CV_8UC1,
-                      cv::Scalar(255));
+        cv::Mat patch(candidate.box.height + 2 * padding, candidate.box.width + 2 * padding,
+                      CV_8UC1, cv::Scalar(255));
         for (const std::size_t region : candidate.regions)
             for (const auto &pixel : regions[region])
                 patch.at<std::uint8_t>(pixel - origin) = 0;

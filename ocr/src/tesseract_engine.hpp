@@ -42,12 +42,12 @@ class TesseractEngine
     // their mean confidence. Nothing when no word is found or the mean is below the minimum.
     std::optional<TextBox> read_as_one(const cv::Rect &box);
 
-      // The single most confident symbol in the current image: in single-character mode the LSTM
+    // The single most confident symbol in the current image: in single-character mode the LSTM
     // engine often returns a character together with a look-alike ("c" as "Cc"), of which only
     // one can be right. Nothing when no symbol reaches the minimum confidence.
     std::optional<TextBox> read_best_symbol(const cv::Rect &box);
 
-private:
+  private:
     bool recognise();
 
     std::unique_ptr<tesseract::TessBaseAPI> api_;

@@ -41,7 +41,8 @@ std::vector<GroundTruthWord> write_lines(cv::Mat &canvas, const std::vector<std:
         while (split >> word) {
             // FreeType draws on 3-channel images only.
             cv::Mat ink = cv::Mat::zeros(canvas.size(), CV_8UC3), ink_gray;
-            face->putText(ink, word, position, height, cv::Scalar::all(255), -1, cv::LINE_AA, false);
+            face->putText(ink, word, position, height, cv::Scalar::all(255), -1, cv::LINE_AA,
+                          false);
             face->putText(canvas, word, position, height, colour, -1, cv::LINE_AA, false);
             cv::cvtColor(ink, ink_gray, cv::COLOR_BGR2GRAY);
             words.push_back({word, cv::boundingRect(ink_gray)});
@@ -180,9 +181,12 @@ cv::Size east_test_input_size(const Scene &scene)
     std::vector<int> heights;
     for (const auto &word : scene.words)
         heights.push_back(word.box.height);
-    std::nth_element(heights.begin(), heights.begin() + static_cast<long>(heights.size() / 2), heights.end());
+    std::nth_element(heights.begin(), heights.begin() + static_cast<long>(heights.size() / 2),
+                     heights.end());
     const double scale = wanted_height_px / heights[heights.size() / 2];
-    const auto to_32 = [&](int side) { return std::max(32, static_cast<int>(side * scale + 16) / 32 * 32); };
+    const auto to_32 = [&](int side) {
+        return std::max(32, static_cast<int>(side * scale + 16) / 32 * 32);
+    };
     return {to_32(scene.image.cols), to_32(scene.image.rows)};
 }
 

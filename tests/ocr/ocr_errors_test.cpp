@@ -7,7 +7,8 @@
 
 #include "ubii/ocr/ocr.hpp"
 
-namespace {
+namespace
+{
 
 using namespace ubii::ocr;
 using ::testing::HasSubstr;
@@ -24,24 +25,34 @@ template <class Expected, class Action> std::string message_of(Action action)
     return "";
 }
 
-class PureInput : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() { pipeline = std::make_unique<PurePipeline>(); }
-    static void TearDownTestSuite() { pipeline.reset(); }
+class PureInput : public ::testing::Test
+{
+  protected:
+    static void SetUpTestSuite()
+    {
+        pipeline = std::make_unique<PurePipeline>();
+    }
+    static void TearDownTestSuite()
+    {
+        pipeline.reset();
+    }
     static std::unique_ptr<PurePipeline> pipeline;
 };
 std::unique_ptr<PurePipeline> PureInput::pipeline;
 
 TEST_F(PureInput, EmptyImageIsRefused)
 {
-    EXPECT_THAT(message_of<InvalidImage>([] { pipeline->recognise(cv::Mat()); }), HasSubstr("empty"));
+    EXPECT_THAT(message_of<InvalidImage>([] { pipeline->recognise(cv::Mat()); }),
+                HasSubstr("empty"));
 }
 
 TEST_F(PureInput, SixteenBitAndTwoChannelImagesAreRefused)
 {
-    EXPECT_THAT(message_of<InvalidImage>([] { pipeline->recognise(cv::Mat(10, 10, CV_16UC1, cv::Scalar(0))); }),
+    EXPECT_THAT(message_of<InvalidImage>(
+                    [] { pipeline->recognise(cv::Mat(10, 10, CV_16UC1, cv::Scalar(0))); }),
                 HasSubstr("8-bit"));
-    EXPECT_THAT(message_of<InvalidImage>([] { pipeline->recognise(cv::Mat(10, 10, CV_8UC2, cv::Scalar(0))); }),
+    EXPECT_THAT(message_of<InvalidImage>(
+                    [] { pipeline->recognise(cv::Mat(10, 10, CV_8UC2, cv::Scalar(0))); }),
                 HasSubstr("8-bit"));
 }
 
@@ -53,23 +64,28 @@ TEST_F(PureInput, BlankImageGivesNoWords)
 TEST(Image2DInput, WrongByteCountIsRefusedWithTheExpectedCount)
 {
     const std::vector<std::uint8_t> bytes(29);
-    const ubii_image_view image{5, 2, ubii_dataStructure_Image2D_DataFormat_RGB8, bytes.data(), bytes.size()};
-    EXPECT_THAT(message_of<InvalidImage>([&] { image_to_mat(image); }), HasSubstr("needs 30 bytes, it has 29"));
+    const ubii_image_view image{5, 2, ubii_dataStructure_Image2D_DataFormat_RGB8, bytes.data(),
+                                bytes.size()};
+    EXPECT_THAT(message_of<InvalidImage>([&] { image_to_mat(image); }),
+                HasSubstr("needs 30 bytes, it has 29"));
 }
 
 TEST(Image2DInput, UnknownDataFormatIsRefused)
 {
     const std::vector<std::uint8_t> bytes(10);
     const volatile int unknown_format = 7; // as it could arrive off the wire
-    const ubii_image_view image{5, 2, static_cast<ubii_dataStructure_Image2D_DataFormat>(unknown_format),
+    const ubii_image_view image{5, 2,
+                                static_cast<ubii_dataStructure_Image2D_DataFormat>(unknown_format),
                                 bytes.data(), bytes.size()};
-    EXPECT_THAT(message_of<InvalidImage>([&] { image_to_mat(image); }), HasSubstr("unknown Image2D data format 7"));
+    EXPECT_THAT(message_of<InvalidImage>([&] { image_to_mat(image); }),
+                HasSubstr("unknown Image2D data format 7"));
 }
 
 TEST(Image2DInput, EmptyAndDatalessImagesAreRefused)
 {
     const std::vector<std::uint8_t> bytes(10);
-    const ubii_image_view no_width{0, 2, ubii_dataStructure_Image2D_DataFormat_GRAY8, bytes.data(), 0};
+    const ubii_image_view no_width{0, 2, ubii_dataStructure_Image2D_DataFormat_GRAY8, bytes.data(),
+                                   0};
     EXPECT_THAT(message_of<InvalidImage>([&] { image_to_mat(no_width); }), HasSubstr("empty"));
     const ubii_image_view no_data{5, 2, ubii_dataStructure_Image2D_DataFormat_GRAY8, nullptr, 10};
     EXPECT_THAT(message_of<InvalidImage>([&] { image_to_mat(no_data); }), HasSubstr("it has 0"));
@@ -95,7 +111,8 @@ TEST(EastModel, FileThatIsNoNetworkIsRefused)
     std::ofstream(path) << "this is not a network";
     EastOptions options;
     options.model_path = path;
-    EXPECT_THAT(message_of<ModelError>([&] { EastPipeline pipeline{options}; }), HasSubstr("could not load"));
+    EXPECT_THAT(message_of<ModelError>([&] { EastPipeline pipeline{options}; }),
+                HasSubstr("could not load"));
 }
 
 TEST(EastModel, InputSizeMustBeMultiplesOf32)
@@ -103,14 +120,16 @@ TEST(EastModel, InputSizeMustBeMultiplesOf32)
     EastOptions options;
     options.model_path = UBII_OCR_EAST_TEST_MODEL;
     options.input_size = cv::Size(300, 320);
-    EXPECT_THAT(message_of<InvalidArgument>([&] { EastPipeline pipeline{options}; }), HasSubstr("multiples of 32"));
+    EXPECT_THAT(message_of<InvalidArgument>([&] { EastPipeline pipeline{options}; }),
+                HasSubstr("multiples of 32"));
 }
 
 TEST(Tesseract, MissingLanguageIsReportedAsEngineError)
 {
     PureOptions options;
     options.tesseract.language = "xyz";
-    EXPECT_THAT(message_of<EngineError>([&] { PurePipeline pipeline{options}; }), HasSubstr("language 'xyz'"));
+    EXPECT_THAT(message_of<EngineError>([&] { PurePipeline pipeline{options}; }),
+                HasSubstr("language 'xyz'"));
 }
 
 TEST(Tesseract, UnknownVariableIsReportedAsEngineError)

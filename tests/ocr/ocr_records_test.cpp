@@ -9,7 +9,8 @@
 
 #include "ocr_test_support.hpp"
 
-namespace {
+namespace
+{
 
 using namespace ubii::ocr;
 
@@ -17,7 +18,8 @@ TEST(Image2DToMat, Rgb8BecomesBgrWithThePixelsInPlace)
 {
     // 2x1 pixels: pure red, then (1, 2, 3).
     const std::vector<std::uint8_t> bytes = {255, 0, 0, 1, 2, 3};
-    const cv::Mat mat = image_to_mat({2, 1, ubii_dataStructure_Image2D_DataFormat_RGB8, bytes.data(), bytes.size()});
+    const cv::Mat mat = image_to_mat(
+        {2, 1, ubii_dataStructure_Image2D_DataFormat_RGB8, bytes.data(), bytes.size()});
     ASSERT_EQ(mat.type(), CV_8UC3);
     ASSERT_EQ(mat.size(), cv::Size(2, 1));
     EXPECT_EQ(mat.at<cv::Vec3b>(0, 0), cv::Vec3b(0, 0, 255));
@@ -27,12 +29,14 @@ TEST(Image2DToMat, Rgb8BecomesBgrWithThePixelsInPlace)
 TEST(Image2DToMat, Rgba8AndGray8KeepTheirChannels)
 {
     const std::vector<std::uint8_t> rgba = {10, 20, 30, 40};
-    const cv::Mat bgra = image_to_mat({1, 1, ubii_dataStructure_Image2D_DataFormat_RGBA8, rgba.data(), rgba.size()});
+    const cv::Mat bgra =
+        image_to_mat({1, 1, ubii_dataStructure_Image2D_DataFormat_RGBA8, rgba.data(), rgba.size()});
     ASSERT_EQ(bgra.type(), CV_8UC4);
     EXPECT_EQ(bgra.at<cv::Vec4b>(0, 0), cv::Vec4b(30, 20, 10, 40));
 
     const std::vector<std::uint8_t> gray = {1, 2, 3, 4, 5, 6};
-    const cv::Mat mat = image_to_mat({3, 2, ubii_dataStructure_Image2D_DataFormat_GRAY8, gray.data(), gray.size()});
+    const cv::Mat mat =
+        image_to_mat({3, 2, ubii_dataStructure_Image2D_DataFormat_GRAY8, gray.data(), gray.size()});
     ASSERT_EQ(mat.type(), CV_8UC1);
     EXPECT_EQ(mat.at<std::uint8_t>(1, 0), 4);
     EXPECT_EQ(mat.at<std::uint8_t>(1, 2), 6);
@@ -41,7 +45,8 @@ TEST(Image2DToMat, Rgba8AndGray8KeepTheirChannels)
 TEST(Image2DToMat, TheMatOwnsItsPixels)
 {
     std::vector<std::uint8_t> gray = {7, 8};
-    const cv::Mat mat = image_to_mat({2, 1, ubii_dataStructure_Image2D_DataFormat_GRAY8, gray.data(), gray.size()});
+    const cv::Mat mat =
+        image_to_mat({2, 1, ubii_dataStructure_Image2D_DataFormat_GRAY8, gray.data(), gray.size()});
     gray.assign({0, 0});
     EXPECT_EQ(mat.at<std::uint8_t>(0, 0), 7);
 }

@@ -2,7 +2,8 @@
 
 #include <map>
 
-namespace ubii::ocr::test {
+namespace ubii::ocr::test
+{
 
 const testdata::Scene &scene(const std::string &name)
 {

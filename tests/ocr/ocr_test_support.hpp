@@ -9,7 +9,8 @@
 #include "scenes.hpp"
 #include "ubii/ocr/ocr.hpp"
 
-namespace ubii::ocr::test {
+namespace ubii::ocr::test
+{
 
 const testdata::Scene &scene(const std::string &name); // "baseline", "sign" or "webcam"
 
