@@ -1,6 +1,7 @@
 #include "ubii/ocr/image_records.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 
 #include <opencv2/imgproc.hpp>
@@ -12,24 +13,35 @@ namespace ubii::ocr
 namespace
 {
 
-int channels_of(ubii_dataStructure_Image2D_DataFormat format)
+// The format as the integer the C side stored: the view is filled by C code from the wire, where
+// any value may arrive, and C++ may not load an out-of-range value through the enum type itself.
+int format_value(const ubii_image_view &image)
 {
-    switch (format) {
+    int value = 0;
+    static_assert(sizeof image.format == sizeof value, "C enums are ints");
+    std::memcpy(&value, &image.format, sizeof value);
+    return value;
+}
+
+int channels_of(const ubii_image_view &image)
+{
+    switch (format_value(image)) {
     case ubii_dataStructure_Image2D_DataFormat_GRAY8:
         return 1;
     case ubii_dataStructure_Image2D_DataFormat_RGB8:
         return 3;
     case ubii_dataStructure_Image2D_DataFormat_RGBA8:
         return 4;
+    default:
+        throw InvalidImage("unknown Image2D data format " + std::to_string(format_value(image)));
     }
-    throw InvalidImage("unknown Image2D data format " + std::to_string(static_cast<int>(format)));
 }
 
 } // namespace
 
 cv::Mat image_to_mat(const ubii_image_view &image)
 {
-    const int channels = channels_of(image.format);
+    const int channels = channels_of(image);
     if (image.width <= 0 || image.height <= 0)
         throw InvalidImage("Image2D of " + std::to_string(image.width) + "x" +
                            std::to_string(image.height) + " pixels is empty");

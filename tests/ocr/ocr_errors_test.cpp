@@ -1,5 +1,6 @@
 // Bad input and bad configuration end in exceptions derived from ubii::ocr::Error, with messages
 // that say what was wrong.
+#include <cstring>
 #include <fstream>
 
 #include <gmock/gmock.h>
@@ -73,10 +74,11 @@ TEST(Image2DInput, WrongByteCountIsRefusedWithTheExpectedCount)
 TEST(Image2DInput, UnknownDataFormatIsRefused)
 {
     const std::vector<std::uint8_t> bytes(10);
-    const volatile int unknown_format = 7; // as it could arrive off the wire
-    const ubii_image_view image{5, 2,
-                                static_cast<ubii_dataStructure_Image2D_DataFormat>(unknown_format),
-                                bytes.data(), bytes.size()};
+    ubii_image_view image{5, 2, ubii_dataStructure_Image2D_DataFormat_GRAY8, bytes.data(),
+                          bytes.size()};
+    // As C code fills it from the wire: C++ itself may not form an out-of-range enum value.
+    const int unknown_format = 7;
+    std::memcpy(&image.format, &unknown_format, sizeof unknown_format);
     EXPECT_THAT(message_of<InvalidImage>([&] { image_to_mat(image); }),
                 HasSubstr("unknown Image2D data format 7"));
 }
