@@ -27,6 +27,35 @@ FrameStats summarise(std::vector<double> times_ms)
     return stats;
 }
 
+namespace
+{
+
+double time_one_ms(const std::function<void()> &frame)
+{
+    const auto start = std::chrono::steady_clock::now();
+    frame();
+    const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+    return took.count();
+}
+
+} // namespace
+
+std::pair<FrameStats, FrameStats> time_frames_interleaved(int warm_up, int count,
+                                                          const std::function<void()> &first,
+                                                          const std::function<void()> &second)
+{
+    for (int i = 0; i < warm_up; ++i) {
+        first();
+        second();
+    }
+    std::vector<double> first_ms, second_ms;
+    for (int i = 0; i < count; ++i) {
+        first_ms.push_back(time_one_ms(first));
+        second_ms.push_back(time_one_ms(second));
+    }
+    return {summarise(std::move(first_ms)), summarise(std::move(second_ms))};
+}
+
 FrameStats time_frames(int warm_up, int count, const std::function<void()> &frame)
 {
     for (int i = 0; i < warm_up; ++i)
