@@ -11,6 +11,7 @@ packages=(
   clang libclang-rt-14-dev clang-format
   iproute2 util-linux
   gcc-arm-linux-gnueabihf libc6-dev-armhf-cross qemu-user
+  libtesseract-dev tesseract-ocr-eng tesseract-ocr libopencv-dev python3-onnx fonts-dejavu-core
 )
 
 missing=()

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The test command: installs what is missing (Debian packages, npm packages), builds libubii three
-# times (Linux port plain, Linux port with AddressSanitizer + UndefinedBehaviorSanitizer, embedded
-# port with both sanitizers) and runs the whole suite on each, inside a private network namespace
-# where a real master is started and stopped by the tests.
+# times (Linux port plain, Linux port with AddressSanitizer + UndefinedBehaviorSanitizer, both with
+# the OCR pipelines; embedded port with both sanitizers) and runs the whole suite on each, inside a
+# private network namespace where a real master is started and stopped by the tests.
 #
 #   scripts/test.sh            build trees in ./build/test and ./build/asan
 #   UBII_BUILD_DIR=DIR ...     build trees below DIR instead
@@ -28,8 +28,8 @@ run_configuration() {
 }
 
 mkdir -p "$build_root"
-run_configuration test -DCMAKE_BUILD_TYPE=RelWithDebInfo
-run_configuration asan -DCMAKE_BUILD_TYPE=Debug -DUBII_SANITIZE=ON
+run_configuration test -DCMAKE_BUILD_TYPE=RelWithDebInfo -DUBII_WITH_OCR=ON
+run_configuration asan -DCMAKE_BUILD_TYPE=Debug -DUBII_SANITIZE=ON -DUBII_WITH_OCR=ON
 # The integration suite's largest message (an image) needs more than the 2 KB default.
 run_configuration embedded -DCMAKE_BUILD_TYPE=Debug -DUBII_SANITIZE=ON -DUBII_PORT=embedded \
   -DUBII_EMBEDDED_MAX_MESSAGE=16384
