@@ -39,10 +39,12 @@ std::vector<GroundTruthWord> write_lines(cv::Mat &canvas, const std::vector<std:
         std::istringstream split(line);
         std::string word;
         while (split >> word) {
-            cv::Mat ink = cv::Mat::zeros(canvas.size(), CV_8UC1);
-            face->putText(ink, word, position, height, cv::Scalar(255), -1, cv::LINE_AA, false);
+            // FreeType draws on 3-channel images only.
+            cv::Mat ink = cv::Mat::zeros(canvas.size(), CV_8UC3), ink_gray;
+            face->putText(ink, word, position, height, cv::Scalar::all(255), -1, cv::LINE_AA, false);
             face->putText(canvas, word, position, height, colour, -1, cv::LINE_AA, false);
-            words.push_back({word, cv::boundingRect(ink)});
+            cv::cvtColor(ink, ink_gray, cv::COLOR_BGR2GRAY);
+            words.push_back({word, cv::boundingRect(ink_gray)});
             position.x += face->getTextSize(word, height, -1, &baseline).width + space;
         }
         position.x = origin.x;
