@@ -131,7 +131,8 @@ int run(const Settings &settings)
     status = node.stop();
     print_line("ocr_node: stopped (signal " + std::to_string(stop_requested()) +
                "): " + std::to_string(frames) + " frames, " + std::to_string(failed) + " failed, " +
-               std::to_string(latest.dropped()) + " dropped");
+               std::to_string(latest.dropped()) + " dropped of " +
+               std::to_string(latest.received()) + " received");
     if (status != UBII_OK)
         std::fprintf(stderr, "ocr_node: the master did not confirm the stop in %d ms (%s)\n",
                      Node::stop_timeout_ms, ubii_strerror(status));
