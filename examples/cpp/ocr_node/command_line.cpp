@@ -1,8 +1,11 @@
 #include "command_line.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <limits>
 #include <map>
+#include <variant>
 #include <vector>
 
 namespace ocr_node
@@ -14,7 +17,7 @@ double to_number(const std::string &flag, const std::string &text)
 {
     char *end = nullptr;
     const double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || end == nullptr || *end != '\0')
+    if (text.empty() || end == nullptr || *end != '\0' || !std::isfinite(value))
         throw UsageError(flag + " needs a number, not '" + text + "'");
     return value;
 }
@@ -22,7 +25,8 @@ double to_number(const std::string &flag, const std::string &text)
 int to_int(const std::string &flag, const std::string &text)
 {
     const double value = to_number(flag, text);
-    if (value != static_cast<double>(static_cast<int>(value)))
+    if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max() ||
+        value != std::trunc(value))
         throw UsageError(flag + " needs a whole number, not '" + text + "'");
     return static_cast<int>(value);
 }
@@ -179,8 +183,8 @@ Settings parse_command_line(int argc, char **argv)
         options_of<ubii::ocr::MserOptions>(settings, "--colour").use_colour = true;
     for (const auto &[flag, value] : flags)
         value_flags().at(flag)(settings, value);
-    if (!(settings.connect_timeout_s > 0))
-        throw UsageError("--connect-timeout must be more than 0 seconds");
+    if (!(settings.connect_timeout_s > 0 && settings.connect_timeout_s <= 1e6))
+        throw UsageError("--connect-timeout must be more than 0 and at most 1e6 seconds");
     return settings;
 }
 
