@@ -227,4 +227,47 @@ TEST_F(OcrNode, AMalformedFrameGivesAnErrorLineAndTheNextGoodFrameIsRecognised)
     std::cout << "ocr_node said:" << all_lines(ocr_node) << '\n';
 }
 
+// Failures before any frame: a clear message and exit status 1.
+int run_to_exit(const std::vector<std::string> &arguments, std::vector<std::string> &output,
+                const std::string &expected)
+{
+    std::vector<std::string> command = {"sh", "-c", "exec \"$0\" \"$@\" 2>&1", UBII_OCR_NODE};
+    command.insert(command.end(), arguments.begin(), arguments.end());
+    ChildProcess child(command);
+    const auto deadline = std::chrono::steady_clock::now() + 15s;
+    while (find_line(child, std::regex(expected)) < 0 &&
+           std::chrono::steady_clock::now() < deadline) {
+        usleep(20000);
+    }
+    const int status = child.stop(SIGTERM, 5s); // it has ended by then, or is ending
+    output = child.lines();
+    return status;
+}
+
+TEST(OcrNodeErrors, TheEastPipelineWithoutItsModelFileSaysSo)
+{
+    std::vector<std::string> output;
+    const std::string expected = "^ocr_node: cannot start the east pipeline: EAST model file "
+                                 "'/nonexistent/frozen_east_text_detection.pb' is missing";
+    EXPECT_EQ(run_to_exit({"east", "/nonexistent/frozen_east_text_detection.pb"}, output, expected),
+              1);
+    ASSERT_FALSE(output.empty());
+    EXPECT_TRUE(std::regex_search(output.back(), std::regex(expected))) << output.back();
+}
+
+TEST(OcrNodeErrors, AMasterThatIsNotReachableIsReportedAfterTheTimeout)
+{
+    // Nothing listens there: the test master uses port_base() .. port_base() + 3.
+    const std::string service = "tcp://127.0.0.1:" + std::to_string(ubii_test::port_base() + 40);
+    const std::string expected =
+        "^ocr_node: the master at " + service + " / [^ ]+ was not reachable within 1 s";
+    std::vector<std::string> output;
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(
+        run_to_exit({"pure", "--service", service, "--connect-timeout", "1"}, output, expected), 1);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, 10s);
+    ASSERT_FALSE(output.empty());
+    EXPECT_TRUE(std::regex_search(output.back(), std::regex(expected))) << output.back();
+}
+
 } // namespace
