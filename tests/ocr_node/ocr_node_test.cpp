@@ -130,9 +130,9 @@ void expect_scene_words(const ubii_test::Received &record, ChildProcess &ocr_nod
         EXPECT_GE(box.confidence, 70.0f) << box.text;
     }
 
-    const int line = find_line(
-        ocr_node, std::regex("^frame [0-9]+ 1200x900: " + std::to_string(boxes.size()) +
-                             " boxes, [0-9.]+ ms, [0-9]+ dropped: \"" + boxes.front().text + "\""));
+    const int line =
+        find_line(ocr_node, std::regex("^frame [0-9]+ 1200x900: " + std::to_string(boxes.size()) +
+                                       " boxes, [0-9.]+ ms, [0-9]+ dropped: \""));
     ASSERT_GE(line, 0) << "no frame line for " << boxes.size() << " boxes:" << all_lines(ocr_node);
     for (const auto &box : boxes) {
         EXPECT_NE(ocr_node.lines()[static_cast<size_t>(line)].find('"' + box.text + '"'),
