@@ -43,6 +43,27 @@ ChildProcess::~ChildProcess()
     }
 }
 
+int ChildProcess::stop(int signal, std::chrono::milliseconds timeout)
+{
+    if (pid_ <= 0) {
+        return -1;
+    }
+    kill(pid_, signal);
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    int status = 0;
+    pid_t ended;
+    while ((ended = waitpid(pid_, &status, WNOHANG)) == 0 &&
+           std::chrono::steady_clock::now() < deadline) {
+        usleep(10000);
+    }
+    if (ended == 0) {
+        kill(pid_, SIGKILL);
+        waitpid(pid_, nullptr, 0);
+    }
+    pid_ = -1;
+    return ended == 0 || !WIFEXITED(status) ? -1 : WEXITSTATUS(status);
+}
+
 std::vector<std::string> &ChildProcess::lines()
 {
     char buffer[4096];

@@ -4,6 +4,7 @@
 // Runs a program with its stdout on a non-blocking pipe, so a test can read its lines while it
 // keeps polling a node. The child is killed when the object goes.
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,10 @@ class ChildProcess
     {
         return pid_ > 0;
     }
+    // Sends `signal` and waits up to `timeout` for the child to end. Returns its exit status, or
+    // -1 if it ended by a signal or did not end in time (it is then killed). Its output stays
+    // readable through lines().
+    int stop(int signal, std::chrono::milliseconds timeout);
     // Complete lines read so far (without the newline); reads what is available, never blocks.
     std::vector<std::string> &lines();
 
