@@ -322,9 +322,17 @@ static void read_input(ubii_embedded_port *port, ubii__embedded_channel *ch)
     }
 }
 
+/* Reads receive() may do between two waits once the buffered input is used up, so a node polled
+ * once per frame takes in more than one buffer's worth per frame, yet a flood cannot keep it
+ * inside one poll call. */
+enum { REFILLS_PER_WAIT = 8 };
+
 static ubii_status wait_for_io(void *context, int timeout_ms)
 {
     ubii_embedded_port *port = context;
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        port->channels[i].refills = REFILLS_PER_WAIT;
+    }
     struct pollfd fds[UBII_CHANNEL_COUNT];
     ubii__embedded_channel *owners[UBII_CHANNEL_COUNT];
     nfds_t count = 0;
@@ -505,6 +513,14 @@ static ubii_status receive(void *context, ubii_channel which, const uint8_t **da
                 reset_connection(ch);
             }
             return UBII_ERR_TOO_LARGE;
+        }
+        if (result == PARSE_NEED_MORE && ch->protocol != PROTOCOL_HTTP && ch->refills > 0) {
+            size_t buffered = ch->rx_used;
+            ch->refills--;
+            read_input(port, ch);
+            if (ch->fd >= 0 && ch->rx_used > buffered) {
+                continue;
+            }
         }
         if (result == PARSE_ERROR) {
             port->decode_errors++;

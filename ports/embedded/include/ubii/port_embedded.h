@@ -63,6 +63,7 @@ typedef struct ubii__embedded_channel {
     uint8_t phase;    /* connecting, handshaking, open */
     uint8_t zmq_type; /* REQ or DEALER */
     uint8_t step;     /* within the handshake, or within an HTTP reply */
+    uint8_t refills;  /* further reads receive() may still do before the next wait */
     ubii_channel_state state;
     uint32_t address; /* IPv4, network order */
     uint16_t port;
