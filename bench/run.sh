@@ -44,11 +44,13 @@ exec "$root/scripts/private-net.sh" bash -c '
     run "nodejs-websocket" "node \"$root/bench/nodejs_bench.js\" \"$client\" tcp://127.0.0.1:8101 ws://127.0.0.1:8104 $rounds $messages $window | sed -n \"s/^RESULT //p\""
   } | awk -v rounds="$rounds" -v messages="$messages" -v window="$window" "
     { name[NR] = \$1; row[\$1] = NR; for (i = 2; i <= NF; i++) { split(\$i, kv, \"=\"); v[NR, kv[1]] = kv[2] } }
-    function ratio(mine, theirs,   c, n) {
+    function ratio(mine, theirs,   c, n, user) {
       c = row[mine]; n = row[theirs]
-      if (!c || !n || v[c, \"cpu_us_per_message\"] <= 0 || v[c, \"user_us_per_message\"] <= 0) return
-      printf \"  %-24s vs %-16s cpu/msg %.1fx (user %.1fx)   rtt p50 %.2fx   rtt p99 %.2fx   throughput %.2fx\n\", mine, theirs,
-        v[n, \"cpu_us_per_message\"] / v[c, \"cpu_us_per_message\"], v[n, \"user_us_per_message\"] / v[c, \"user_us_per_message\"],
+      if (!c || !n || v[c, \"cpu_us_per_message\"] <= 0) return
+      # getrusage counts in clock ticks: a client that barely runs may show 0 user time.
+      user = v[c, \"user_us_per_message\"] > 0 ? sprintf(\"%.1fx\", v[n, \"user_us_per_message\"] / v[c, \"user_us_per_message\"]) : \"n/a, 0 measured\"
+      printf \"  %-24s vs %-16s cpu/msg %.1fx (user %s)   rtt p50 %.2fx   rtt p99 %.2fx   throughput %.2fx\n\", mine, theirs,
+        v[n, \"cpu_us_per_message\"] / v[c, \"cpu_us_per_message\"], user,
         v[n, \"rtt_p50_us\"] / v[c, \"rtt_p50_us\"], v[n, \"rtt_p99_us\"] / v[c, \"rtt_p99_us\"],
         v[c, \"messages_per_s\"] / v[n, \"messages_per_s\"]
     }
