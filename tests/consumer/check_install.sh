@@ -2,10 +2,10 @@
 # Installs the build tree BUILD_DIR into WORK/prefix, then builds and runs the consumer application
 # against it three ways: find_package with the static library, with the shared library, and
 # pkg-config.
-#   check_install.sh BUILD_DIR WORK
+#   check_install.sh BUILD_DIR WORK [ocr]      (ocr: the build has the OCR pipelines; use them too)
 set -euo pipefail
 # grep reads its whole input (no -q): an early exit would fail the writer with SIGPIPE under pipefail.
-build=${1:?} work=${2:?}
+build=${1:?} work=${2:?} ocr=${3:-}
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work"
 mkdir -p "$work"
@@ -13,7 +13,10 @@ prefix="$work/prefix"
 
 cmake --install "$build" --prefix "$prefix" >"$work/install.log"
 
-cmake -S "$here" -B "$work/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" >"$work/configure.log"
+consumer_ocr=OFF
+[ "$ocr" = ocr ] && consumer_ocr=ON
+cmake -S "$here" -B "$work/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" \
+  -DUBII_CONSUMER_OCR=$consumer_ocr >"$work/configure.log"
 cmake --build "$work/cmake-build" >"$work/build.log"
 "$work/cmake-build/consumer_static"
 if nm -D "$work/cmake-build/consumer_static" 2>/dev/null | grep ubii_ >/dev/null; then
@@ -30,4 +33,7 @@ LD_LIBRARY_PATH="$libdir" ldd "$work/cmake-build/consumer_shared" | grep -F "$li
 flags=$(PKG_CONFIG_PATH="$libdir/pkgconfig" pkg-config --cflags --libs ubii)
 cc -std=c99 -Wall -Werror "$here/consumer.c" $flags -o "$work/consumer_pkgconfig"
 LD_LIBRARY_PATH="$libdir" "$work/consumer_pkgconfig"
-echo "check_install: find_package (static, shared) and pkg-config consumers work"
+if [ "$consumer_ocr" = ON ]; then
+  OMP_THREAD_LIMIT=1 "$work/cmake-build/consumer_ocr"
+fi
+echo "check_install: find_package (static, shared$([ "$consumer_ocr" = ON ] && echo ", ocr")) and pkg-config consumers work"
