@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <string>
 
 #include <opencv2/features2d.hpp>
 
@@ -152,4 +153,5 @@ std::vector<TextBox> MserPipeline::recognise(const cv::Mat &image)
     }
     return impl_->read_runs(gray, candidates, impl_->options.line_gap);
 }
+
 } // namespace ubii::ocr

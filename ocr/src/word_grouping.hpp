@@ -10,7 +10,8 @@ namespace ubii::ocr::detail
 {
 
 // Joins characters into words: two characters belong to one word when they share most of a line
-// (vertical overlap) and the gap between them is at most `max_gap` times the shorter one's height.
+// (vertical overlap), differ in height by less than a factor of 2 and the gap between them is at
+// most `max_gap` times the shorter one's height.
 // A word's text is its characters left to right, its confidence their mean, its box their union.
 std::vector<TextBox> group_into_words(const std::vector<TextBox> &characters, float max_gap);
 
