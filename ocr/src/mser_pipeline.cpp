@@ -1,5 +1,9 @@
 #include "ubii/ocr/mser_pipeline.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <string>
+
 #include <opencv2/features2d.hpp>
 
 #include "character_regions.hpp"
@@ -11,13 +15,47 @@
 namespace ubii::ocr
 {
 
+namespace
+{
+
+// Clutter (edges, lines) read as text comes back as punctuation alone ('\', '|', '/'): not text.
+bool has_letter_or_digit(const std::string &text)
+{
+    // Bytes of multi-byte UTF-8 sequences (>= 0x80) count: letters beyond ASCII are text too.
+    return std::any_of(text.begin(), text.end(), [](char c) {
+        const auto byte = static_cast<unsigned char>(c);
+        return byte >= 0x80 || std::isalnum(byte) != 0;
+    });
+}
+
+// A character whitelist without a space makes the LSTM engine drop the spaces between words
+// (tesseract-ocr/tesseract#2923): a run read as one line would come back as a single word. The
+// space is no character a user means to exclude, so it is allowed when reading lines.
+TesseractOptions engine_options(const MserOptions &options)
+{
+    TesseractOptions chosen = options.tesseract;
+    const auto whitelist = chosen.variables.find("tessedit_char_whitelist");
+    if (options.recognise_as == MserOptions::Unit::lines && whitelist != chosen.variables.end() &&
+        !whitelist->second.empty() && whitelist->second.find(' ') == std::string::npos)
+        whitelist->second += ' ';
+    return chosen;
+}
+
+} // namespace
+
 struct MserPipeline::Impl {
     explicit Impl(const MserOptions &chosen)
-        : options(chosen), engine(chosen.tesseract),
+        : options(chosen), engine(engine_options(chosen)),
           mser(cv::MSER::create(chosen.delta, chosen.min_area, chosen.max_area,
                                 chosen.max_variation, chosen.min_diversity))
     {
     }
+    std::vector<TextBox> read_characters(const std::vector<std::vector<cv::Point>> &regions,
+                                         const std::vector<detail::CharacterCandidate> &candidates);
+    std::vector<TextBox> read_runs(const cv::Mat &gray,
+                                   const std::vector<detail::CharacterCandidate> &candidates,
+                                   float max_gap);
+
     MserOptions options;
     detail::TesseractEngine engine;
     cv::Ptr<cv::MSER> mser;
@@ -26,14 +64,74 @@ struct MserPipeline::Impl {
 MserPipeline::MserPipeline(const MserOptions &options)
 {
     if (options.delta <= 0 || options.min_area <= 0 || options.max_area < options.min_area ||
-        options.max_variation <= 0.0 || options.padding_px < 0 || options.word_gap < 0.0f)
+        options.max_variation <= 0.0 || options.padding_px < 0 || options.word_gap < 0.0f ||
+        options.line_gap < 0.0f)
         throw InvalidArgument(
             "MSER options out of range: delta, min_area, max_variation must be > 0, "
-            "max_area >= min_area, padding and word_gap >= 0");
+            "max_area >= min_area, padding, word_gap and line_gap >= 0");
     impl_ = std::make_unique<Impl>(options);
 }
 
 MserPipeline::~MserPipeline() = default;
+
+std::vector<TextBox>
+MserPipeline::Impl::read_characters(const std::vector<std::vector<cv::Point>> &regions,
+                                    const std::vector<detail::CharacterCandidate> &candidates)
+{
+    // Each character is read from its own region's pixels, drawn black on white with the padding
+    // around it. Cut from the frame instead, the padding takes in parts of the neighbouring
+    // letters, which single-character mode then reads as extra characters. This also turns light
+    // text on a dark ground into dark on light.
+    const int padding = options.padding_px;
+    std::vector<TextBox> characters;
+    for (const auto &candidate : candidates) {
+        const cv::Point origin = candidate.box.tl() - cv::Point(padding, padding);
+        cv::Mat patch(candidate.box.height + 2 * padding, candidate.box.width + 2 * padding,
+                      CV_8UC1, cv::Scalar(255));
+        for (const std::size_t region : candidate.regions)
+            for (const auto &pixel : regions[region])
+                patch.at<std::uint8_t>(pixel - origin) = 0;
+        engine.set_image(patch);
+        auto character = options.tesseract.segmentation == Segmentation::single_char
+                             ? engine.read_best_symbol(candidate.box)
+                             : engine.read_as_one(candidate.box);
+        if (character)
+            characters.push_back(std::move(*character));
+    }
+    return detail::group_into_words(characters, options.word_gap);
+}
+
+std::vector<TextBox> MserPipeline::Impl::read_runs(
+    const cv::Mat &gray, const std::vector<detail::CharacterCandidate> &candidates, float max_gap)
+{
+    std::vector<cv::Rect> characters;
+    for (const auto &candidate : candidates)
+        characters.push_back(candidate.box);
+    std::vector<cv::Rect> runs;
+    for (const auto &members : detail::cluster_words(characters, max_gap)) {
+        cv::Rect run = characters[members.front()];
+        for (const std::size_t i : members)
+            run |= characters[i];
+        runs.push_back(run);
+    }
+    runs = detail::merge_overlapping(std::move(runs));
+
+    // One SetImage per frame; each run is read through SetRectangle, which thresholds and reads
+    // only that part of the frame (no crop copies). Tesseract's word boxes come back in frame
+    // coordinates.
+    const cv::Rect frame(0, 0, gray.cols, gray.rows);
+    const cv::Point margin(options.padding_px, options.padding_px);
+    engine.set_image(gray);
+    std::vector<TextBox> words;
+    for (const auto &run : runs) {
+        engine.set_rectangle(cv::Rect(run.tl() - margin, run.br() + margin) & frame);
+        for (auto &word : engine.read_words())
+            if (has_letter_or_digit(word.text))
+                words.push_back(std::move(word));
+    }
+    detail::sort_reading_order(words);
+    return words;
+}
 
 std::vector<TextBox> MserPipeline::recognise(const cv::Mat &image)
 {
@@ -41,29 +139,19 @@ std::vector<TextBox> MserPipeline::recognise(const cv::Mat &image)
     std::vector<std::vector<cv::Point>> regions;
     std::vector<cv::Rect> region_boxes;
     const bool colour = impl_->options.use_colour && image.channels() != 1;
+    // OpenCV's grayscale MSER finds dark-on-light and light-on-dark regions (two passes), so
+    // light text on a dark panel needs no inverted pass of its own.
     impl_->mser->detectRegions(colour ? detail::to_bgr(image) : gray, regions, region_boxes);
-
-    // Each character is read from its own region's pixels, drawn black on white with the padding
-    // around it. Cut from the frame instead, the padding takes in parts of the neighbouring
-    // letters, which single-character mode then reads as extra characters. This also turns light
-    // text on a dark ground into dark on light.
-    const int padding = impl_->options.padding_px;
-    std::vector<TextBox> characters;
-    for (const auto &candidate : detail::character_candidates(region_boxes)) {
-        const cv::Point origin = candidate.box.tl() - cv::Point(padding, padding);
-        cv::Mat patch(candidate.box.height + 2 * padding, candidate.box.width + 2 * padding,
-                      CV_8UC1, cv::Scalar(255));
-        for (const std::size_t region : candidate.regions)
-            for (const auto &pixel : regions[region])
-                patch.at<std::uint8_t>(pixel - origin) = 0;
-        impl_->engine.set_image(patch);
-        auto character = impl_->options.tesseract.segmentation == Segmentation::single_char
-                             ? impl_->engine.read_best_symbol(candidate.box)
-                             : impl_->engine.read_as_one(candidate.box);
-        if (character)
-            characters.push_back(std::move(*character));
+    const auto candidates = detail::character_candidates(region_boxes);
+    switch (impl_->options.recognise_as) {
+    case MserOptions::Unit::characters:
+        return impl_->read_characters(regions, candidates);
+    case MserOptions::Unit::words:
+        return impl_->read_runs(gray, candidates, impl_->options.word_gap);
+    case MserOptions::Unit::lines:
+        break;
     }
-    return detail::group_into_words(characters, impl_->options.word_gap);
+    return impl_->read_runs(gray, candidates, impl_->options.line_gap);
 }
 
 } // namespace ubii::ocr

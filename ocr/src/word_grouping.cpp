@@ -9,12 +9,20 @@ namespace
 {
 
 constexpr double min_line_overlap = 0.5; // of the shorter character's height
+// Letters of one line differ in height by less than this factor (ascenders and descenders against
+// x-height letters, about 1.5 in common fonts); a taller region beside them is clutter or a panel,
+// and joining it would chain lines together.
+constexpr double max_height_ratio = 2.0;
+// Two word boxes sharing more than this fraction of the smaller one hold the same letters.
+constexpr double max_shared_area = 0.5;
 
 bool same_word(const cv::Rect &a, const cv::Rect &b, float max_gap)
 {
     const int overlap_top = std::max(a.y, b.y);
     const int overlap_bottom = std::min(a.y + a.height, b.y + b.height);
     const int shorter = std::min(a.height, b.height);
+    if (std::max(a.height, b.height) > max_height_ratio * shorter)
+        return false;
     if (overlap_bottom - overlap_top < min_line_overlap * shorter)
         return false;
     const int gap = std::max(a.x, b.x) - std::min(a.x + a.width, b.x + b.width);
@@ -41,25 +49,34 @@ struct DisjointSets {
 
 } // namespace
 
-std::vector<TextBox> group_into_words(const std::vector<TextBox> &characters, float max_gap)
+std::vector<std::vector<std::size_t>> cluster_words(const std::vector<cv::Rect> &boxes,
+                                                    float max_gap)
 {
-    DisjointSets sets(characters.size());
-    for (std::size_t i = 0; i < characters.size(); ++i)
-        for (std::size_t j = i + 1; j < characters.size(); ++j)
-            if (same_word(characters[i].box, characters[j].box, max_gap))
+    DisjointSets sets(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        for (std::size_t j = i + 1; j < boxes.size(); ++j)
+            if (same_word(boxes[i], boxes[j], max_gap))
                 sets.join(i, j);
 
-    std::vector<std::vector<std::size_t>> members(characters.size());
-    for (std::size_t i = 0; i < characters.size(); ++i)
+    std::vector<std::vector<std::size_t>> members(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i)
         members[sets.root(i)].push_back(i);
+    members.erase(std::remove_if(members.begin(), members.end(),
+                                 [](const auto &word) { return word.empty(); }),
+                  members.end());
+    for (auto &word : members)
+        std::sort(word.begin(), word.end(),
+                  [&](std::size_t a, std::size_t b) { return boxes[a].x < boxes[b].x; });
+    return members;
+}
 
+std::vector<TextBox> group_into_words(const std::vector<TextBox> &characters, float max_gap)
+{
+    std::vector<cv::Rect> boxes;
+    for (const auto &character : characters)
+        boxes.push_back(character.box);
     std::vector<TextBox> words;
-    for (auto &word : members) {
-        if (word.empty())
-            continue;
-        std::sort(word.begin(), word.end(), [&](std::size_t a, std::size_t b) {
-            return characters[a].box.x < characters[b].box.x;
-        });
+    for (const auto &word : cluster_words(boxes, max_gap)) {
         TextBox joined{"", 0.0f, characters[word.front()].box, std::nullopt};
         for (const std::size_t i : word) {
             joined.text += characters[i].text;
@@ -69,11 +86,34 @@ std::vector<TextBox> group_into_words(const std::vector<TextBox> &characters, fl
         joined.confidence /= static_cast<float>(word.size());
         words.push_back(std::move(joined));
     }
+    sort_reading_order(words);
+    return words;
+}
+
+std::vector<cv::Rect> merge_overlapping(std::vector<cv::Rect> boxes)
+{
+    // Repeated until nothing changes: a union can come to overlap a box it did not overlap before.
+    for (bool merged = true; merged;) {
+        merged = false;
+        for (std::size_t i = 0; i < boxes.size() && !merged; ++i)
+            for (std::size_t j = i + 1; j < boxes.size() && !merged; ++j) {
+                const double smaller = std::min(boxes[i].area(), boxes[j].area());
+                if ((boxes[i] & boxes[j]).area() > max_shared_area * smaller) {
+                    boxes[i] |= boxes[j];
+                    boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(j));
+                    merged = true;
+                }
+            }
+    }
+    return boxes;
+}
+
+void sort_reading_order(std::vector<TextBox> &words)
+{
     // A stable order for callers: top to bottom, then left to right.
     std::sort(words.begin(), words.end(), [](const TextBox &a, const TextBox &b) {
         return a.box.y != b.box.y ? a.box.y < b.box.y : a.box.x < b.box.x;
     });
-    return words;
 }
 
 } // namespace ubii::ocr::detail

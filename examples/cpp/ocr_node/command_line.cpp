@@ -5,6 +5,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -104,6 +105,21 @@ const std::map<std::string, Setter> &value_flags()
                  east->padding_px = padding;
              else
                  options_of<MserOptions>(s, "--padding").padding_px = padding;
+         }},
+        {"--unit",
+         [](Settings &s, const std::string &v) {
+             using ubii::ocr::MserOptions;
+             using ubii::ocr::Segmentation;
+             static const std::map<std::string, std::pair<MserOptions::Unit, Segmentation>> units =
+                 {{"characters", {MserOptions::Unit::characters, Segmentation::single_char}},
+                  {"words", {MserOptions::Unit::words, Segmentation::single_word}},
+                  {"lines", {MserOptions::Unit::lines, Segmentation::single_line}}};
+             const auto found = units.find(v);
+             if (found == units.end())
+                 throw UsageError("--unit takes characters, words or lines, not '" + v + "'");
+             auto &mser = options_of<MserOptions>(s, "--unit");
+             mser.recognise_as = found->second.first;
+             mser.tesseract.segmentation = found->second.second; // the mode that reads the unit
          }},
         {"--delta",
          [](Settings &s, const std::string &v) {
@@ -208,13 +224,15 @@ master and topics:
 Tesseract (every pipeline):
   --lang LANG             language data (eng)
   --tessdata DIR          folder holding LANG.traineddata (Tesseract's default)
-  --psm MODE              auto|block|line|word|char|sparse (pure: auto, mser: char, east: line)
+  --psm MODE              auto|block|line|word|char|sparse (pure: auto, mser: line, east: line)
   --min-confidence N      drop words below N, 0..100 (70)
   --var NAME=VALUE        any Tesseract variable, e.g. tessedit_char_whitelist=0123456789
 
 mser:
-  --padding PX            around each region (2)
-  --delta N, --min-area N, --max-area N, --max-variation X   MSER parameters (5, 30, 14400, 0.25)
+  --unit U                what Tesseract reads: characters|words|lines (lines); sets --psm to
+                          char|word|line (a --psm after it overrides)
+  --padding PX            around each unit (6)
+  --delta N, --min-area N, --max-area N, --max-variation X   MSER parameters (3, 30, 14400, 0.25)
   --colour                MSER on the colour image (MSCR)
 
 east:
