@@ -1,4 +1,6 @@
 /* Device registration (ubii/devices.h; full schema only): service calls for this client. */
+#include <string.h>
+
 #include "node_internal.h"
 #include "ubii/devices.h"
 
@@ -8,7 +10,8 @@ ubii_status ubii_register_device(ubii_node *node, const ubii_devices_Device *dev
     if (node == NULL || device == NULL) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
-    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii_services_ServiceRequest request;
+    memset(&request, 0, sizeof request);
     ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_DEVICE_REGISTRATION);
     request.which_type = ubii_services_ServiceRequest_device_tag;
     request.type.device = *device;
@@ -23,7 +26,8 @@ ubii_status ubii_deregister_device(ubii_node *node, const char *device_id, uint3
     if (node == NULL || device_id == NULL) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
-    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii_services_ServiceRequest request;
+    memset(&request, 0, sizeof request);
     ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_DEVICE_DEREGISTRATION);
     request.which_type = ubii_services_ServiceRequest_device_tag;
     if (!ubii__copy_string(request.type.device.id, sizeof request.type.device.id, device_id)) {

@@ -146,7 +146,8 @@ static void handle_record(ubii_node *node, const uint8_t *bytes, size_t size,
 
 static void handle_master_error(ubii_node *node, const uint8_t *bytes, size_t size)
 {
-    ubii_general_Error error = ubii_general_Error_init_zero;
+    ubii_general_Error error;
+    memset(&error, 0, sizeof error);
     pb_istream_t stream = pb_istream_from_buffer(bytes, size);
     node->stats.master_errors++;
     if (!pb_decode(&stream, ubii_general_Error_fields, &error)) {

@@ -40,7 +40,8 @@ void ubii__parse_reply(const uint8_t *bytes, size_t size, ubii_reply *reply,
         return;
     }
     if (reply->member == ubii_services_ServiceReply_error_tag) {
-        ubii_general_Error error = ubii_general_Error_init_zero;
+        ubii_general_Error error;
+        memset(&error, 0, sizeof error);
         pb_istream_t stream = pb_istream_from_buffer(reply->bytes, reply->size);
         if (!pb_decode(&stream, ubii_general_Error_fields, &error)) {
             reply->status = UBII_ERR_DECODE;
@@ -248,7 +249,8 @@ ubii_status ubii_call_topic(ubii_node *node, const char *topic, uint32_t timeout
     if (topic == NULL) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
-    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii_services_ServiceRequest request;
+    memset(&request, 0, sizeof request);
     if (!ubii__copy_string(request.topic, sizeof request.topic, topic)) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
