@@ -25,23 +25,31 @@ compiles() {
 }
 compiles 'int f(ubii_node *n, const ubii_dataStructure_Pose3D *p); int f(ubii_node *n, const ubii_dataStructure_Pose3D *p) { return ubii_publish_pose3d(n, "/t", p) + UBII_RECORD_COLOR; }' ||
   { echo "topics_schema: kept API does not compile:"; cat "$work/snippet.log"; exit 1; }
-for snippet in \
-  'int f(ubii_node *n); int f(ubii_node *n) { return ubii_publish_doubles(n, "/t", 0, 0); }' \
-  'int f(ubii_node *n); int f(ubii_node *n) { return ubii_publish_image(n, "/t", 0, 0, 0, 0, 0); }' \
-  'int f(const ubii_record *r); int f(const ubii_record *r) { ubii_image_view v; return ubii_record_image(r, &v); }' \
-  'int f(void); int f(void) { return UBII_RECORD_IMAGE2D; }' \
-  'int f(void); int f(void) { return UBII_RECORD_MATRIX4X4; }' \
-  'int f(ubii_node *n); int f(ubii_node *n) { return ubii_deregister_device(n, "d", 0, 0, 0); }' \
-  '#include "ubii/lists.h"'; do
-  if compiles "$snippet"; then
-    echo "topics_schema: compiles, but must not: $snippet"; exit 1
+# Each snippet with the name its error message must give (so that it fails for that reason).
+while IFS='|' read -r reason snippet; do
+  if compiles "$snippet" || ! grep -q "$reason" "$work/snippet.log"; then
+    echo "topics_schema: must fail to compile for want of $reason: $snippet"; cat "$work/snippet.log"; exit 1
   fi
-done
+done <<'SNIPPETS'
+ubii_publish_doubles|int f(ubii_node *n); int f(ubii_node *n) { return ubii_publish_doubles(n, "/t", 0, 0); }
+ubii_publish_image|int f(ubii_node *n); int f(ubii_node *n) { return ubii_publish_image(n, "/t", 0, 0, 0, 0, 0); }
+ubii_image_view|int f(const ubii_record *r); int f(const ubii_record *r) { ubii_image_view v; return ubii_record_image(r, &v); }
+ubii_record_list|int f(const ubii_record *r); int f(const ubii_record *r) { return ubii_record_list(r, 0, 0); }
+UBII_RECORD_IMAGE2D|int f(void); int f(void) { return UBII_RECORD_IMAGE2D; }
+UBII_RECORD_MATRIX4X4|int f(void); int f(void) { return UBII_RECORD_MATRIX4X4; }
+UBII_RECORD_DOUBLE_LIST|int f(void); int f(void) { return UBII_RECORD_DOUBLE_LIST; }
+ubii_deregister_device|int f(ubii_node *n); int f(ubii_node *n) { return ubii_deregister_device(n, "d", 0, 0, 0); }
+ubii_dataStructure_Object2D|int f(void); int f(void) { return (int)sizeof(ubii_dataStructure_Object2D); }
+lists.pb.h|#include "ubii/lists.h"
+image.pb.h|#include "ubii/image.h"
+device.pb.h|#include "ubii/devices.h"
+SNIPPETS
 echo "topics_schema: the API of left-out types does not compile"
 
 "$work/tests/topics_schema_test"
 service="tcp://127.0.0.1:$base"
 "$work/examples/static_node" "$service" "tcp://127.0.0.1:$((base + 2))"
 "$work/examples/static_node" "$service" "ws://127.0.0.1:$((base + 3))"
+"$work/examples/pubsub" "$service" "tcp://127.0.0.1:$((base + 2))" 1 | tail -n 1
 "$work/examples/pubsub" "$service" "ws://127.0.0.1:$((base + 3))" 1 | tail -n 1
 echo "topics_schema: reduced-schema node exchanged records with the master"
