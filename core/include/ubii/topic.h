@@ -39,7 +39,9 @@ extern "C" {
  * UBII_RECORD_<MEMBER> for each member, its .proto name in capitals (UBII_RECORD_DOUBLE = 3,
  * UBII_RECORD_POSE3D = 18, UBII_RECORD_OBJECT2D_LIST = 21, ...). The list is generated from the
  * schema (ubii/record_types.h, see proto/README.md), so a type the schema leaves out has no name
- * here and using it does not compile.
+ * here and using it does not compile; neither do the functions and headers of left-out types
+ * (ubii/lists.h, image.h, devices.h). (Calling an undeclared function is an error in C++ and in C
+ * with -pedantic-errors or -Werror; GCC's default C mode only warns.)
  *   full schema (UBII_SCHEMA=full): all 41 members; UBII_RECORD_QUATERNION_LIST holds a single
  *     Quaternion (a quirk of the upstream schema).
  *   topics schema (UBII_SCHEMA=topics): DOUBLE, FLOAT, INT32, BOOL, STRING, VECTOR2, VECTOR3,
@@ -98,7 +100,8 @@ UBII_API ubii_status ubii_record_string(const ubii_record *record, const char **
                                         size_t *length);
 
 /* Decodes a message-typed member (vector3, pose3D, object2D, ...) into `message`, which must be
- * the nanopb struct `fields` describes. UBII_ERR_WRONG_TYPE if the record holds another member. */
+ * the nanopb struct `fields` describes. UBII_ERR_WRONG_TYPE if the record holds another member;
+ * UBII_ERR_INVALID_ARGUMENT for a type that is not a message member of this build's schema. */
 UBII_API ubii_status ubii_record_decode(const ubii_record *record, ubii_record_type type,
                                         const pb_msgdesc_t *fields, void *message);
 
@@ -131,7 +134,8 @@ UBII_API ubii_status ubii_publish_pose2d(ubii_node *node, const char *topic,
                                          const ubii_dataStructure_Pose2D *value);
 UBII_API ubii_status ubii_publish_pose3d(ubii_node *node, const char *topic,
                                          const ubii_dataStructure_Pose3D *value);
-/* Any message-typed member of the schema: `message` is the nanopb struct `fields` describes, e.g.
+/* Any message-typed member of the schema (else UBII_ERR_INVALID_ARGUMENT): `message` is the nanopb
+ * struct `fields` describes, e.g.
  * ubii_publish_message(node, "/pose", UBII_RECORD_POSE3D, ubii_dataStructure_Pose3D_fields, &pose).
  */
 UBII_API ubii_status ubii_publish_message(ubii_node *node, const char *topic, ubii_record_type type,
