@@ -3,9 +3,10 @@
 # suite: builds the embedded port with that schema in WORK_DIR, checks that the API of left-out
 # types does not compile for a caller, runs its unit test (topics_schema_test) and runs the
 # static_node and pubsub examples against the running master (the `master` fixture).
-#   topics_schema.sh SOURCE_DIR WORK_DIR PORT_BASE BUILD_TYPE SANITIZE MAX_MESSAGE
+#   topics_schema.sh SOURCE_DIR WORK_DIR PORT_BASE BUILD_TYPE SANITIZE MAX_MESSAGE FULL_GENERATED_DIR
 set -euo pipefail
 source=${1:?} work=${2:?} base=${3:?} build_type=${4:?} sanitize=${5:?} max_message=${6:?}
+full_generated=${7:?}
 
 cmake -S "$source" -B "$work" -DUBII_SCHEMA=topics -DUBII_PORT=embedded -DUBII_BUILD_TESTS=ON \
   -DUBII_BUILD_EXAMPLES=ON -DCMAKE_BUILD_TYPE="$build_type" -DUBII_SANITIZE="$sanitize" \
@@ -13,6 +14,21 @@ cmake -S "$source" -B "$work" -DUBII_SCHEMA=topics -DUBII_PORT=embedded -DUBII_B
   { cat "$work.configure.log"; exit 1; }
 cmake --build "$work" -j 2 --target static_node pubsub topics_schema_test >"$work.build.log" 2>&1 ||
   { cat "$work.build.log"; exit 1; }
+
+# Same wire format: every field the topics schema generates is in the full schema with the same
+# number, label (singular, repeated, oneof member), type and allocation: nanopb's FIELDLIST lines,
+# each prefixed with its message.
+fields() {
+  find "$1" -name '*.pb.h' -print0 | sort -z | xargs -0 cat | awk '
+    /_FIELDLIST\(X, a\)/ { message = $2; sub(/_FIELDLIST.*/, "", message) }
+    /^X\(a,/ { line = $0; gsub(/[ \\]+/, "", line); print message " " line }' | sort -u
+}
+fields "$work/proto/generated" >"$work/topics.fields"
+fields "$full_generated" >"$work/full.fields"
+if [ ! -s "$work/topics.fields" ] || comm -23 "$work/topics.fields" "$work/full.fields" | grep .; then
+  echo "topics_schema: the fields above are not the full schema's"; exit 1
+fi
+echo "topics_schema: $(wc -l <"$work/topics.fields") fields, each as in the full schema"
 
 # A caller of a left-out type's API gets a compile error (C99 with -pedantic-errors, where calling
 # an undeclared function is one; in C++ it always is). The first snippet must compile, so that the
