@@ -2,7 +2,8 @@
 # Footprint of the embedded build (core + schema + nanopb runtime + embedded port) at -Os, for
 # x86-64 and 32-bit ARM: code (.text), initialised data, zero data, and the static RAM of the
 # documented default configuration (8 subscriptions, 2 KB messages): sizeof(ubii_node) +
-# sizeof(ubii_embedded_port). A report, not a test.
+# sizeof(ubii_embedded_port). Each with the full schema and with the reduced "topics" schema
+# (UBII_SCHEMA=topics, proto/schemas/topics.schema). A report, not a test.
 #   scripts/footprint.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -12,9 +13,10 @@ config=(-DUBII_MAX_SUBSCRIPTIONS=8 -DUBII_MAX_TOPIC_SIZE=128 -DUBII_MAX_URL_SIZE
 flags="${config[*]}"
 
 measure() {
-  local name=$1 dir=$2; shift 2
+  local name=$1 schema=$2; shift 2
+  local dir="$out/$name-$schema"
   cmake -S "$root" -B "$dir" -DUBII_PORT=embedded -DUBII_BUILD_TESTS=OFF -DUBII_BUILD_EXAMPLES=OFF \
-    -DCMAKE_BUILD_TYPE=MinSizeRel -DCMAKE_C_FLAGS="$flags" "$@" >/dev/null
+    -DCMAKE_BUILD_TYPE=MinSizeRel -DCMAKE_C_FLAGS="$flags" -DUBII_SCHEMA="$schema" "$@" >/dev/null
   cmake --build "$dir" -j "$(nproc)" --target ubii_core ubii_schema ubii_nanopb ubii_port_embedded >/dev/null
   local objects
   objects=$(find "$dir" -name '*.o' \( -path '*ubii_core.dir*' -o -path '*ubii_schema.dir*' \
@@ -33,14 +35,18 @@ C
   $cc -std=c99 $flags -I"$root/core/include" -I"$root/ports/embedded/include" -I"$dir/core/include" \
     -I"$dir/proto/generated" -I"$dir/nanopb" "$dir/sizes.c" -o "$dir/sizes"
   read -r node port < <("${runner[@]}" "$dir/sizes")
-  echo "$sizes" | awk -v n="$name" -v node="$node" -v port="$port" \
-    '{ printf "%-8s %8d %8d %8d %10d %10d %10d\n", n, $1, $2, $3, node, port, node + port + $3 }'
+  echo "$sizes" | awk -v n="$name" -v s="$schema" -v node="$node" -v port="$port" \
+    '{ printf "%-8s %-7s %8d %8d %8d %10d %10d %10d\n", n, s, $1, $2, $3, node, port, node + port + $3 }'
 }
 
-printf "%-8s %8s %8s %8s %10s %10s %10s\n" target text data bss "ubii_node" "port" "static RAM"
-measure x86-64 "$out/x86-64"
+printf "%-8s %-7s %8s %8s %8s %10s %10s %10s\n" target schema text data bss "ubii_node" "port" "static RAM"
+for schema in full topics; do
+  measure x86-64 "$schema"
+done
 if command -v arm-linux-gnueabihf-gcc >/dev/null && command -v qemu-arm >/dev/null; then
-  measure arm "$out/arm" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/toolchains/arm-linux-gnueabihf.cmake"
+  for schema in full topics; do
+    measure arm "$schema" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/toolchains/arm-linux-gnueabihf.cmake"
+  done
 fi
 echo "config: ${config[*]} UBII_EMBEDDED_MAX_MESSAGE=2048"
 echo "data: the schema's constant tables (read-only after relocation; flash on a microcontroller), not RAM"

@@ -2,7 +2,8 @@
 # The test command: installs what is missing (Debian packages, npm packages), builds libubii three
 # times (Linux port plain, Linux port with AddressSanitizer + UndefinedBehaviorSanitizer, both with
 # the OCR pipelines; embedded port with both sanitizers) and runs the whole suite on each, inside a
-# private network namespace where a real master is started and stopped by the tests.
+# private network namespace where a real master is started and stopped by the tests. The embedded
+# configuration's suite also builds and tests the reduced "topics" schema (tests/schema).
 #
 #   scripts/test.sh            build trees in ./build/test and ./build/asan
 #   UBII_BUILD_DIR=DIR ...     build trees below DIR instead

@@ -156,7 +156,8 @@ static ubii_status begin_connecting(ubii_node *node)
     if (status != UBII_OK) {
         return status;
     }
-    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii_services_ServiceRequest request;
+    memset(&request, 0, sizeof request);
     ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_SERVER_CONFIGURATION);
     status = ubii__enqueue(node, &request, 0, UBII__CALL_SERVER_CONFIGURATION, NULL, NULL);
     if (status != UBII_OK) {
@@ -251,7 +252,8 @@ static bool derive_topic_url(ubii_node *node, const char *port)
 
 static void on_server_configuration(ubii_node *node, const ubii_reply *reply)
 {
-    ubii_servers_Server server = ubii_servers_Server_init_zero;
+    ubii_servers_Server server;
+    memset(&server, 0, sizeof server);
     ubii_status status = ubii_reply_decode(reply, ubii_services_ServiceReply_server_tag,
                                            ubii_servers_Server_fields, &server);
     if (status != UBII_OK && status != UBII_ERR_TOO_LARGE) {
@@ -271,7 +273,8 @@ static void on_server_configuration(ubii_node *node, const ubii_reply *reply)
         ubii__connection_lost(node, UBII_ERR_UNEXPECTED_REPLY);
         return;
     }
-    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii_services_ServiceRequest request;
+    memset(&request, 0, sizeof request);
     ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_CLIENT_REGISTRATION);
     request.which_type = ubii_services_ServiceRequest_client_tag;
     ubii__copy_string(request.type.client.name, sizeof request.type.client.name, node->client_name);
@@ -286,7 +289,8 @@ static void on_server_configuration(ubii_node *node, const ubii_reply *reply)
 
 static void on_registration(ubii_node *node, const ubii_reply *reply)
 {
-    ubii_clients_Client client = ubii_clients_Client_init_zero;
+    ubii_clients_Client client;
+    memset(&client, 0, sizeof client);
     ubii_status status = ubii_reply_decode(reply, ubii_services_ServiceReply_client_tag,
                                            ubii_clients_Client_fields, &client);
     if (status == UBII_OK && client.id[0] == '\0') {
@@ -357,7 +361,8 @@ static void begin_stopping(ubii_node *node)
         return;
     }
     ubii__cancel_calls(node, UBII_ERR_CANCELLED);
-    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii_services_ServiceRequest request;
+    memset(&request, 0, sizeof request);
     ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_CLIENT_DEREGISTRATION);
     request.which_type = ubii_services_ServiceRequest_client_tag;
     ubii__copy_string(request.type.client.id, sizeof request.type.client.id, node->client_id);

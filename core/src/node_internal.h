@@ -3,6 +3,8 @@
 
 /* Shared between the core's source files; not installed. */
 
+#include <pb_encode.h>
+
 #include "ubii/node.h"
 #include "ubii/service.h"
 #include "ubii/topic.h"
@@ -49,6 +51,24 @@ void ubii__dispatch_record(ubii_node *node, const ubii_record *record, const uin
 /* record.c */
 /* Parses TopicData bytes; calls ubii__dispatch_record for each record it holds. */
 void ubii__handle_topic_data(ubii_node *node, const uint8_t *bytes, size_t size);
+
+/* Whether `number` is a TopicDataRecord value member of this build's schema (the generated
+ * UBII_RECORD_TYPE_LIST), and the wire type every value member arrives with. */
+bool ubii__record_type_known(uint32_t number);
+int ubii__record_wire_type(uint32_t number);
+
+/* publish.c */
+/* Writes a record's value member, tag included. */
+typedef bool (*ubii__value_writer)(pb_ostream_t *stream, uint32_t member, const void *value);
+/* Writes the body of a message-typed member (without tag and length). */
+typedef bool (*ubii__body_writer)(pb_ostream_t *stream, const void *body);
+/* Sends one TopicData{record{topic, [timestamp], value}}. */
+ubii_status ubii__publish(ubii_node *node, const char *topic, uint32_t member,
+                          ubii__value_writer write, const void *value);
+/* The same with a message-typed member whose body `write_body` writes (called twice: sizing, then
+ * writing). */
+ubii_status ubii__publish_body(ubii_node *node, const char *topic, uint32_t member,
+                               ubii__body_writer write_body, const void *body);
 
 /* regex.c: UBII_OK match, UBII_ERR_NOT_FOUND no match, or why it cannot run. */
 ubii_status ubii__regex_search(const char *pattern, const char *text, uint32_t step_limit);

@@ -18,15 +18,31 @@ enum {
     TOPIC_DATA_RECORD = 2,
     TOPIC_DATA_RECORD_LIST = 3,
     TOPIC_DATA_ERROR = 4,
-    LIST_ELEMENTS = 1,
-    IMAGE_WIDTH = 1,
-    IMAGE_HEIGHT = 2,
-    IMAGE_FORMAT = 3,
-    IMAGE_DATA = 4
+    LIST_ELEMENTS = 1
 };
 
-/* The wire type each value member must arrive with. */
-static int member_wire_type(uint32_t number)
+/* A fact of the wire schema, the same for every schema built: the full schema's value members are
+ * fields 3 to 44 except 33 (client_id). A reduced schema recognises a left-out member by number and
+ * wire type, and skips the record instead of failing on it. */
+static bool is_value_member(uint32_t number)
+{
+    return number >= UBII_RECORD_DOUBLE && number <= RECORD_LAST_MEMBER &&
+           number != RECORD_CLIENT_ID;
+}
+
+bool ubii__record_type_known(uint32_t number)
+{
+    switch (number) {
+#define UBII_RECORD_CASE(name, field_number) case UBII_RECORD_##name:
+        UBII_RECORD_TYPE_LIST(UBII_RECORD_CASE)
+#undef UBII_RECORD_CASE
+        return true;
+    default:
+        return false;
+    }
+}
+
+int ubii__record_wire_type(uint32_t number)
 {
     switch (number) {
     case UBII_RECORD_DOUBLE:
@@ -60,6 +76,7 @@ static ubii_status parse_record(ubii_node *node, const uint8_t *bytes, size_t si
     record->topic = node->record_topic;
     record->client_id = node->record_client_id;
 
+    uint32_t member = 0;
     ubii_wire_scan scan;
     ubii_wire_field field;
     bool malformed = false;
@@ -85,21 +102,24 @@ static ubii_status parse_record(ubii_node *node, const uint8_t *bytes, size_t si
             record->timestamp_millis = timestamp.millis;
             record->timestamp_seconds = timestamp.seconds;
             record->timestamp_nanos = timestamp.nanos;
-        } else if (field.number >= UBII_RECORD_DOUBLE && field.number <= RECORD_LAST_MEMBER &&
-                   field.number != RECORD_CLIENT_ID) {
-            if (field.wire_type != member_wire_type(field.number)) {
+        } else if (is_value_member(field.number)) {
+            if (field.wire_type != ubii__record_wire_type(field.number)) {
                 return UBII_ERR_DECODE;
             }
-            record->type = (ubii_record_type)field.number; /* the last member wins */
+            member = field.number; /* the last member wins */
             record->value = field.bytes;
             record->value_size = field.size;
             record->scalar = field.scalar;
         }
     }
-    if (malformed) {
+    if (malformed || record->topic[0] == '\0') {
         return UBII_ERR_DECODE;
     }
-    return record->topic[0] != '\0' ? UBII_OK : UBII_ERR_DECODE;
+    if (member != 0 && !ubii__record_type_known(member)) {
+        return UBII_ERR_UNSUPPORTED; /* a member this build's schema leaves out */
+    }
+    record->type = (ubii_record_type)member;
+    return UBII_OK;
 }
 
 static void handle_record(ubii_node *node, const uint8_t *bytes, size_t size,
@@ -107,6 +127,12 @@ static void handle_record(ubii_node *node, const uint8_t *bytes, size_t size,
 {
     ubii_record record;
     ubii_status status = parse_record(node, bytes, size, &record);
+    if (status == UBII_ERR_UNSUPPORTED) {
+        /* Not an error of the sender's: the record is valid, this build cannot represent it. */
+        node->stats.records_skipped++;
+        ubii__report(node, status, "record of a type this build's schema leaves out was skipped");
+        return;
+    }
     if (status != UBII_OK) {
         node->stats.decode_errors++;
         ubii__report(node, status,
@@ -120,7 +146,8 @@ static void handle_record(ubii_node *node, const uint8_t *bytes, size_t size,
 
 static void handle_master_error(ubii_node *node, const uint8_t *bytes, size_t size)
 {
-    ubii_general_Error error = ubii_general_Error_init_zero;
+    ubii_general_Error error;
+    memset(&error, 0, sizeof error);
     pb_istream_t stream = pb_istream_from_buffer(bytes, size);
     node->stats.master_errors++;
     if (!pb_decode(&stream, ubii_general_Error_fields, &error)) {
@@ -231,7 +258,8 @@ ubii_status ubii_record_decode(const ubii_record *record, ubii_record_type type,
                                const pb_msgdesc_t *fields, void *message)
 {
     if (record == NULL || fields == NULL || message == NULL ||
-        member_wire_type((uint32_t)type) != PB_WT_STRING || type == UBII_RECORD_STRING) {
+        !ubii__record_type_known((uint32_t)type) ||
+        ubii__record_wire_type((uint32_t)type) != PB_WT_STRING || type == UBII_RECORD_STRING) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
     if (record->type != type) {
@@ -239,149 +267,4 @@ ubii_status ubii_record_decode(const ubii_record *record, ubii_record_type type,
     }
     pb_istream_t stream = pb_istream_from_buffer(record->value, record->value_size);
     return pb_decode(&stream, fields, message) ? UBII_OK : UBII_ERR_DECODE;
-}
-
-ubii_status ubii_record_image(const ubii_record *record, ubii_image_view *image)
-{
-    if (record == NULL || image == NULL) {
-        return UBII_ERR_INVALID_ARGUMENT;
-    }
-    if (record->type != UBII_RECORD_IMAGE2D) {
-        return UBII_ERR_WRONG_TYPE;
-    }
-    memset(image, 0, sizeof *image);
-    ubii_wire_scan scan;
-    ubii_wire_field field;
-    bool malformed = false;
-    ubii_wire_scan_init(&scan, record->value, record->value_size);
-    while (ubii_wire_scan_next(&scan, &field, &malformed)) {
-        bool varint = field.wire_type == PB_WT_VARINT;
-        if (field.number == IMAGE_WIDTH && varint) {
-            image->width = (int32_t)(uint32_t)field.scalar;
-        } else if (field.number == IMAGE_HEIGHT && varint) {
-            image->height = (int32_t)(uint32_t)field.scalar;
-        } else if (field.number == IMAGE_FORMAT && varint) {
-            image->format = (ubii_dataStructure_Image2D_DataFormat)field.scalar;
-        } else if (field.number == IMAGE_DATA && field.wire_type == PB_WT_STRING) {
-            image->data = field.bytes;
-            image->size = field.size;
-        }
-    }
-    return malformed ? UBII_ERR_DECODE : UBII_OK;
-}
-
-ubii_status ubii_record_list(const ubii_record *record, ubii_record_type type, ubii_list_iter *iter)
-{
-    if (record == NULL || iter == NULL || member_wire_type((uint32_t)type) != PB_WT_STRING) {
-        return UBII_ERR_INVALID_ARGUMENT;
-    }
-    if (record->type != type) {
-        return UBII_ERR_WRONG_TYPE;
-    }
-    memset(iter, 0, sizeof *iter);
-    iter->bytes = record->value;
-    iter->size = record->value_size;
-    return UBII_OK;
-}
-
-/* The next element of field 1 whose wire type is `element_wire_type`, from a packed run or alone.
- */
-static bool next_scalar(ubii_list_iter *iter, int element_wire_type, uint64_t *value)
-{
-    for (;;) {
-        if (iter->packed_left > 0) {
-            pb_istream_t stream = pb_istream_from_buffer(iter->packed, iter->packed_left);
-            bool ok;
-            if (element_wire_type == PB_WT_64BIT) {
-                ok = pb_decode_fixed64(&stream, value);
-            } else if (element_wire_type == PB_WT_32BIT) {
-                uint32_t bits = 0;
-                ok = pb_decode_fixed32(&stream, &bits);
-                *value = bits;
-            } else {
-                ok = pb_decode_varint(&stream, value);
-            }
-            if (!ok) {
-                iter->malformed = true;
-                iter->packed_left = 0;
-                return false;
-            }
-            iter->packed += iter->packed_left - stream.bytes_left;
-            iter->packed_left = stream.bytes_left;
-            return true;
-        }
-        ubii_wire_scan scan = {iter->bytes, iter->size, iter->offset};
-        ubii_wire_field field;
-        bool found = false;
-        while (!found && ubii_wire_scan_next(&scan, &field, &iter->malformed)) {
-            found = field.number == LIST_ELEMENTS;
-        }
-        iter->offset = scan.offset;
-        if (!found) {
-            return false;
-        }
-        if (field.wire_type == PB_WT_STRING) {
-            iter->packed = field.bytes;
-            iter->packed_left = field.size;
-        } else if (field.wire_type == element_wire_type) {
-            *value = field.scalar;
-            return true;
-        } else {
-            iter->malformed = true;
-            return false;
-        }
-    }
-}
-
-bool ubii_list_next_double(ubii_list_iter *iter, double *value)
-{
-    uint64_t bits;
-    if (iter == NULL || value == NULL || !next_scalar(iter, PB_WT_64BIT, &bits)) {
-        return false;
-    }
-    memcpy(value, &bits, sizeof *value);
-    return true;
-}
-
-bool ubii_list_next_float(ubii_list_iter *iter, float *value)
-{
-    uint64_t bits;
-    if (iter == NULL || value == NULL || !next_scalar(iter, PB_WT_32BIT, &bits)) {
-        return false;
-    }
-    uint32_t narrow = (uint32_t)bits;
-    memcpy(value, &narrow, sizeof *value);
-    return true;
-}
-
-bool ubii_list_next_int32(ubii_list_iter *iter, int32_t *value)
-{
-    uint64_t raw;
-    if (iter == NULL || value == NULL || !next_scalar(iter, PB_WT_VARINT, &raw)) {
-        return false;
-    }
-    *value = (int32_t)(uint32_t)raw;
-    return true;
-}
-
-bool ubii_list_next_bool(ubii_list_iter *iter, bool *value)
-{
-    uint64_t raw;
-    if (iter == NULL || value == NULL || !next_scalar(iter, PB_WT_VARINT, &raw)) {
-        return false;
-    }
-    *value = raw != 0;
-    return true;
-}
-
-bool ubii_list_next_bytes(ubii_list_iter *iter, const uint8_t **bytes, size_t *size)
-{
-    if (iter == NULL || bytes == NULL || size == NULL) {
-        return false;
-    }
-    ubii_field_iter fields = {iter->bytes, iter->size, iter->offset, LIST_ELEMENTS, false};
-    bool found = ubii_field_iter_next(&fields, bytes, size);
-    iter->offset = fields.offset;
-    iter->malformed = iter->malformed || fields.malformed;
-    return found;
 }

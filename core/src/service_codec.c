@@ -14,7 +14,8 @@ ubii_status ubii_encode_topic_request(const char *topic, uint8_t *buffer, size_t
     if (topic == NULL || topic[0] == '\0' || buffer == NULL || length == NULL) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
-    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii_services_ServiceRequest request;
+    memset(&request, 0, sizeof request);
     size_t topic_length = strlen(topic);
     if (topic_length >= sizeof request.topic) {
         return UBII_ERR_INVALID_ARGUMENT;
@@ -52,7 +53,8 @@ ubii_status ubii_decode_server_reply(const uint8_t *bytes, size_t length,
         copy_truncated(error->title, sizeof error->title, reply.error_title);
         copy_truncated(error->message, sizeof error->message, reply.error_message);
     }
-    ubii_servers_Server decoded = ubii_servers_Server_init_zero;
+    ubii_servers_Server decoded;
+    memset(&decoded, 0, sizeof decoded);
     ubii_status status = ubii_reply_decode(&reply, ubii_services_ServiceReply_server_tag,
                                            ubii_servers_Server_fields, &decoded);
     if (status == UBII_ERR_WRONG_TYPE) {

@@ -40,7 +40,8 @@ void ubii__parse_reply(const uint8_t *bytes, size_t size, ubii_reply *reply,
         return;
     }
     if (reply->member == ubii_services_ServiceReply_error_tag) {
-        ubii_general_Error error = ubii_general_Error_init_zero;
+        ubii_general_Error error;
+        memset(&error, 0, sizeof error);
         pb_istream_t stream = pb_istream_from_buffer(reply->bytes, reply->size);
         if (!pb_decode(&stream, ubii_general_Error_fields, &error)) {
             reply->status = UBII_ERR_DECODE;
@@ -248,41 +249,10 @@ ubii_status ubii_call_topic(ubii_node *node, const char *topic, uint32_t timeout
     if (topic == NULL) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
-    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii_services_ServiceRequest request;
+    memset(&request, 0, sizeof request);
     if (!ubii__copy_string(request.topic, sizeof request.topic, topic)) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
-    return ubii_call(node, &request, timeout_ms, fn, user);
-}
-
-ubii_status ubii_register_device(ubii_node *node, const ubii_devices_Device *device,
-                                 uint32_t timeout_ms, ubii_reply_fn fn, void *user)
-{
-    if (node == NULL || device == NULL) {
-        return UBII_ERR_INVALID_ARGUMENT;
-    }
-    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
-    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_DEVICE_REGISTRATION);
-    request.which_type = ubii_services_ServiceRequest_device_tag;
-    request.type.device = *device;
-    ubii__copy_string(request.type.device.client_id, sizeof request.type.device.client_id,
-                      node->client_id);
-    return ubii_call(node, &request, timeout_ms, fn, user);
-}
-
-ubii_status ubii_deregister_device(ubii_node *node, const char *device_id, uint32_t timeout_ms,
-                                   ubii_reply_fn fn, void *user)
-{
-    if (node == NULL || device_id == NULL) {
-        return UBII_ERR_INVALID_ARGUMENT;
-    }
-    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
-    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_DEVICE_DEREGISTRATION);
-    request.which_type = ubii_services_ServiceRequest_device_tag;
-    if (!ubii__copy_string(request.type.device.id, sizeof request.type.device.id, device_id)) {
-        return UBII_ERR_INVALID_ARGUMENT;
-    }
-    ubii__copy_string(request.type.device.client_id, sizeof request.type.device.client_id,
-                      node->client_id);
     return ubii_call(node, &request, timeout_ms, fn, user);
 }

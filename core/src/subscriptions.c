@@ -198,7 +198,8 @@ void ubii__subscriptions_sync(ubii_node *node)
                                {node, UBII__EXACT, false},
                                {node, UBII__REGEX, true},
                                {node, UBII__REGEX, false}};
-    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    ubii_services_ServiceRequest request;
+    memset(&request, 0, sizeof request);
     ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_TOPIC_SUBSCRIPTION);
     request.which_type = ubii_services_ServiceRequest_topic_subscription_tag;
     ubii_services_request_TopicSubscription *subscription = &request.type.topic_subscription;

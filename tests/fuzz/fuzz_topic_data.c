@@ -3,6 +3,8 @@
 #include <string.h>
 
 #include "node_internal.h"
+#include "ubii/image.h"
+#include "ubii/lists.h"
 #include "ubii/dataStructure/object2d.pb.h"
 #include "ubii/dataStructure/pose3d.pb.h"
 

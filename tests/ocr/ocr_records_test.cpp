@@ -8,6 +8,7 @@
 #include <pb_decode.h>
 
 #include "ocr_test_support.hpp"
+#include "ubii/lists.h"
 
 namespace
 {

@@ -87,6 +87,7 @@ typedef struct ubii_stats {
     uint64_t master_errors;      /* TopicData.error and error replies to the node's own requests */
     uint64_t service_timeouts;
     uint64_t reconnects;
+    uint64_t records_skipped; /* records of a type this build's schema leaves out (ubii/topic.h) */
 } ubii_stats;
 
 /* sizeof(ubii_node) as this library was built, for callers that cannot evaluate sizeof (e.g. a

@@ -57,12 +57,7 @@ UBII_API ubii_status ubii_call(ubii_node *node, const ubii_services_ServiceReque
 UBII_API ubii_status ubii_call_topic(ubii_node *node, const char *topic, uint32_t timeout_ms,
                                      ubii_reply_fn fn, void *user);
 
-/* Registers `device` for this client (its client_id is filled in). The reply's member is
- * ubii_services_ServiceReply_device_tag with the ids the master assigned. */
-UBII_API ubii_status ubii_register_device(ubii_node *node, const ubii_devices_Device *device,
-                                          uint32_t timeout_ms, ubii_reply_fn fn, void *user);
-UBII_API ubii_status ubii_deregister_device(ubii_node *node, const char *device_id,
-                                            uint32_t timeout_ms, ubii_reply_fn fn, void *user);
+/* Device registration: ubii/devices.h (full schema only). */
 
 /* Decodes the reply's member into `message` if it is `expected_member`: UBII_ERR_WRONG_TYPE if
  * another member arrived, the reply's own status if it failed. Callback fields of `message` that

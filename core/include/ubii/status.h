@@ -22,7 +22,7 @@ typedef enum ubii_status {
     UBII_ERR_FULL = -9,          /* a fixed-size table or queue of the node is full */
     UBII_ERR_WOULD_BLOCK = -10,  /* the transport cannot take or give a message right now */
     UBII_ERR_TRANSPORT = -11,    /* the transport failed (connection refused, lost, closed) */
-    UBII_ERR_UNSUPPORTED = -12,  /* a URL scheme, regex feature or option this build lacks */
+    UBII_ERR_UNSUPPORTED = -12,  /* a URL scheme, regex, option or record type this build lacks */
     UBII_ERR_TOO_LARGE = -13,    /* a message over the transport's or node's size limit */
     UBII_ERR_WRONG_TYPE = -14,   /* a record holds another type than the one asked for */
     UBII_ERR_NOT_FOUND = -15,    /* no such subscription, call or field */

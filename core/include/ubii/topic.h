@@ -22,63 +22,37 @@
 #include "ubii/node.h"
 #include "ubii/status.h"
 #include "ubii/dataStructure/color.pb.h"
-#include "ubii/dataStructure/image.pb.h"
 #include "ubii/dataStructure/pose2d.pb.h"
 #include "ubii/dataStructure/pose3d.pb.h"
 #include "ubii/dataStructure/quaternion.pb.h"
 #include "ubii/dataStructure/vector2.pb.h"
 #include "ubii/dataStructure/vector3.pb.h"
 #include "ubii/dataStructure/vector4.pb.h"
+#include "ubii/record_types.h"
 #include "ubii/topicData/topicDataRecord.pb.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* The TopicDataRecord value members, by field number (PROTOCOL.md 3.3). */
+/* The TopicDataRecord value members of this build's schema, by field number (PROTOCOL.md 3.3):
+ * UBII_RECORD_<MEMBER> for each member, its .proto name in capitals (UBII_RECORD_DOUBLE = 3,
+ * UBII_RECORD_POSE3D = 18, UBII_RECORD_OBJECT2D_LIST = 21, ...). The list is generated from the
+ * schema (ubii/record_types.h, see proto/README.md), so a type the schema leaves out has no name
+ * here and using it does not compile; neither do the functions and headers of left-out types
+ * (ubii/lists.h, image.h, devices.h). (Calling an undeclared function is an error in C++ and in C
+ * with -pedantic-errors or -Werror; GCC's default C mode only warns.)
+ *   full schema (UBII_SCHEMA=full): all 41 members; UBII_RECORD_QUATERNION_LIST holds a single
+ *     Quaternion (a quirk of the upstream schema).
+ *   topics schema (UBII_SCHEMA=topics): DOUBLE, FLOAT, INT32, BOOL, STRING, VECTOR2, VECTOR3,
+ *     VECTOR4, QUATERNION, COLOR, POSE2D, POSE3D, ERROR. A received record of any other member is
+ *     not passed on: it is counted (ubii_stats.records_skipped) and reported to on_error with
+ *     UBII_ERR_UNSUPPORTED; the other records of the same message are delivered. */
 typedef enum ubii_record_type {
     UBII_RECORD_NONE = 0,
-    UBII_RECORD_DOUBLE = 3,
-    UBII_RECORD_BOOL = 4,
-    UBII_RECORD_STRING = 5,
-    UBII_RECORD_VECTOR2 = 6,
-    UBII_RECORD_VECTOR3 = 7,
-    UBII_RECORD_VECTOR4 = 8,
-    UBII_RECORD_QUATERNION = 9,
-    UBII_RECORD_MATRIX3X2 = 10,
-    UBII_RECORD_MATRIX4X4 = 11,
-    UBII_RECORD_COLOR = 12,
-    UBII_RECORD_TOUCH_EVENT = 13,
-    UBII_RECORD_KEY_EVENT = 14,
-    UBII_RECORD_MOUSE_EVENT = 15,
-    UBII_RECORD_MYO_EVENT = 16,
-    UBII_RECORD_POSE2D = 17,
-    UBII_RECORD_POSE3D = 18,
-    UBII_RECORD_OBJECT2D = 19,
-    UBII_RECORD_OBJECT3D = 20,
-    UBII_RECORD_OBJECT2D_LIST = 21,
-    UBII_RECORD_OBJECT3D_LIST = 22,
-    UBII_RECORD_INT32 = 23,
-    UBII_RECORD_FLOAT = 24,
-    UBII_RECORD_INT32_LIST = 25,
-    UBII_RECORD_FLOAT_LIST = 26,
-    UBII_RECORD_DOUBLE_LIST = 27,
-    UBII_RECORD_STRING_LIST = 28,
-    UBII_RECORD_BOOL_LIST = 29,
-    UBII_RECORD_IMAGE2D = 30,
-    UBII_RECORD_IMAGE2D_LIST = 31,
-    UBII_RECORD_SESSION = 32,
-    UBII_RECORD_TOUCH_EVENT_LIST = 34,
-    UBII_RECORD_VECTOR2_LIST = 35,
-    UBII_RECORD_VECTOR3_LIST = 36,
-    UBII_RECORD_VECTOR4_LIST = 37,
-    UBII_RECORD_QUATERNION_LIST = 38, /* holds a single Quaternion (schema quirk) */
-    UBII_RECORD_ERROR = 39,
-    UBII_RECORD_DEVICE = 40,
-    UBII_RECORD_DEVICE_LIST = 41,
-    UBII_RECORD_COMPONENT = 42,
-    UBII_RECORD_COMPONENT_LIST = 43,
-    UBII_RECORD_SESSION_LIST = 44
+#define UBII_RECORD_ENUMERATOR(name, number) UBII_RECORD_##name = number,
+    UBII_RECORD_TYPE_LIST(UBII_RECORD_ENUMERATOR)
+#undef UBII_RECORD_ENUMERATOR
 } ubii_record_type;
 
 /* A received record, lent to the subscription callback: every pointer is valid only during the
@@ -126,45 +100,18 @@ UBII_API ubii_status ubii_record_string(const ubii_record *record, const char **
                                         size_t *length);
 
 /* Decodes a message-typed member (vector3, pose3D, object2D, ...) into `message`, which must be
- * the nanopb struct `fields` describes. UBII_ERR_WRONG_TYPE if the record holds another member. */
+ * the nanopb struct `fields` describes. UBII_ERR_WRONG_TYPE if the record holds another member;
+ * UBII_ERR_INVALID_ARGUMENT for a type that is not a message member of this build's schema. */
 UBII_API ubii_status ubii_record_decode(const ubii_record *record, ubii_record_type type,
                                         const pb_msgdesc_t *fields, void *message);
 
-/* An Image2D without copying its pixels: `data` points into the received message. */
-typedef struct ubii_image_view {
-    int32_t width;
-    int32_t height;
-    ubii_dataStructure_Image2D_DataFormat format;
-    const uint8_t *data;
-    size_t size;
-} ubii_image_view;
-UBII_API ubii_status ubii_record_image(const ubii_record *record, ubii_image_view *image);
-
-/* The elements of a numeric list member (packed or not), one at a time:
- *     ubii_list_iter it; double d;
- *     if (ubii_record_list(record, UBII_RECORD_DOUBLE_LIST, &it) == UBII_OK)
- *         while (ubii_list_next_double(&it, &d)) ...
- * String lists and lists of messages: ubii_list_next_bytes gives each element's bytes. */
-typedef struct ubii_list_iter {
-    const uint8_t *bytes; /* the list message */
-    size_t size;
-    size_t offset;
-    const uint8_t *packed; /* the packed run being read, if any */
-    size_t packed_left;
-    bool malformed;
-} ubii_list_iter;
-UBII_API ubii_status ubii_record_list(const ubii_record *record, ubii_record_type type,
-                                      ubii_list_iter *iter);
-UBII_API bool ubii_list_next_double(ubii_list_iter *iter, double *value);
-UBII_API bool ubii_list_next_float(ubii_list_iter *iter, float *value);
-UBII_API bool ubii_list_next_int32(ubii_list_iter *iter, int32_t *value);
-UBII_API bool ubii_list_next_bool(ubii_list_iter *iter, bool *value);
-UBII_API bool ubii_list_next_bytes(ubii_list_iter *iter, const uint8_t **bytes, size_t *size);
+/* Lists (ubii/lists.h) and images (ubii/image.h) have accessors of their own, in the full schema
+ * only. */
 
 /* ---- publishing ----------------------------------------------------------------------------- */
 /* Each call sends one record on `topic` at once (UBII_ERR_NOT_CONNECTED unless READY;
  * UBII_ERR_WOULD_BLOCK if the transport's queue is full). With stamp_records the record carries
- * Timestamp.millis = now (epoch ms). */
+ * Timestamp.millis = now (epoch ms). Lists: ubii/lists.h, images: ubii/image.h (full schema). */
 
 UBII_API ubii_status ubii_publish_double(ubii_node *node, const char *topic, double value);
 UBII_API ubii_status ubii_publish_float(ubii_node *node, const char *topic, float value);
@@ -172,20 +119,6 @@ UBII_API ubii_status ubii_publish_int32(ubii_node *node, const char *topic, int3
 UBII_API ubii_status ubii_publish_bool(ubii_node *node, const char *topic, bool value);
 UBII_API ubii_status ubii_publish_string(ubii_node *node, const char *topic, const char *text,
                                          size_t length);
-UBII_API ubii_status ubii_publish_doubles(ubii_node *node, const char *topic, const double *values,
-                                          size_t count);
-UBII_API ubii_status ubii_publish_floats(ubii_node *node, const char *topic, const float *values,
-                                         size_t count);
-UBII_API ubii_status ubii_publish_int32s(ubii_node *node, const char *topic, const int32_t *values,
-                                         size_t count);
-UBII_API ubii_status ubii_publish_bools(ubii_node *node, const char *topic, const bool *values,
-                                        size_t count);
-UBII_API ubii_status ubii_publish_strings(ubii_node *node, const char *topic,
-                                          const char *const *texts, size_t count);
-UBII_API ubii_status ubii_publish_image(ubii_node *node, const char *topic, int32_t width,
-                                        int32_t height,
-                                        ubii_dataStructure_Image2D_DataFormat format,
-                                        const uint8_t *data, size_t size);
 /* The common geometric types; the values are copied at once. */
 UBII_API ubii_status ubii_publish_vector2(ubii_node *node, const char *topic,
                                           const ubii_dataStructure_Vector2 *value);
@@ -201,7 +134,8 @@ UBII_API ubii_status ubii_publish_pose2d(ubii_node *node, const char *topic,
                                          const ubii_dataStructure_Pose2D *value);
 UBII_API ubii_status ubii_publish_pose3d(ubii_node *node, const char *topic,
                                          const ubii_dataStructure_Pose3D *value);
-/* Any message-typed member: `message` is the nanopb struct `fields` describes, e.g.
+/* Any message-typed member of the schema (else UBII_ERR_INVALID_ARGUMENT): `message` is the nanopb
+ * struct `fields` describes, e.g.
  * ubii_publish_message(node, "/pose", UBII_RECORD_POSE3D, ubii_dataStructure_Pose3D_fields, &pose).
  */
 UBII_API ubii_status ubii_publish_message(ubii_node *node, const char *topic, ubii_record_type type,

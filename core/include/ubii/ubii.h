@@ -1,7 +1,7 @@
 #ifndef UBII_UBII_H
 #define UBII_UBII_H
 
-/* Everything an application of the C core needs. */
+/* Everything an application of the C core needs, for the schema it was built with. */
 
 #include "ubii/config.h"
 #include "ubii/node.h"
@@ -11,5 +11,7 @@
 #include "ubii/topic.h"
 #include "ubii/version.h"
 #include "ubii/wire.h"
+/* Generated: the optional parts of the API (lists.h, image.h, devices.h) the schema has. */
+#include "ubii/schema_api.h"
 
 #endif

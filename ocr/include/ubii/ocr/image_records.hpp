@@ -8,7 +8,7 @@
 
 #include <opencv2/core/mat.hpp>
 
-#include "ubii/topic.h"
+#include "ubii/image.h"
 
 namespace ubii::ocr
 {

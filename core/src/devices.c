@@ -1,0 +1,39 @@
+/* Device registration (ubii/devices.h; full schema only): service calls for this client. */
+#include <string.h>
+
+#include "node_internal.h"
+#include "ubii/devices.h"
+
+ubii_status ubii_register_device(ubii_node *node, const ubii_devices_Device *device,
+                                 uint32_t timeout_ms, ubii_reply_fn fn, void *user)
+{
+    if (node == NULL || device == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    ubii_services_ServiceRequest request;
+    memset(&request, 0, sizeof request);
+    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_DEVICE_REGISTRATION);
+    request.which_type = ubii_services_ServiceRequest_device_tag;
+    request.type.device = *device;
+    ubii__copy_string(request.type.device.client_id, sizeof request.type.device.client_id,
+                      node->client_id);
+    return ubii_call(node, &request, timeout_ms, fn, user);
+}
+
+ubii_status ubii_deregister_device(ubii_node *node, const char *device_id, uint32_t timeout_ms,
+                                   ubii_reply_fn fn, void *user)
+{
+    if (node == NULL || device_id == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    ubii_services_ServiceRequest request;
+    memset(&request, 0, sizeof request);
+    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_DEVICE_DEREGISTRATION);
+    request.which_type = ubii_services_ServiceRequest_device_tag;
+    if (!ubii__copy_string(request.type.device.id, sizeof request.type.device.id, device_id)) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    ubii__copy_string(request.type.device.client_id, sizeof request.type.device.client_id,
+                      node->client_id);
+    return ubii_call(node, &request, timeout_ms, fn, user);
+}
