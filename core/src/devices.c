@@ -4,6 +4,22 @@
 #include "node_internal.h"
 #include "ubii/devices.h"
 
+/* A device service request for this client; the caller fills in the rest of the device. */
+static void device_request(const char *service, ubii_services_ServiceRequest *request)
+{
+    memset(request, 0, sizeof *request);
+    ubii__copy_string(request->topic, sizeof request->topic, service);
+    request->which_type = ubii_services_ServiceRequest_device_tag;
+}
+
+static ubii_status call_for_this_client(ubii_node *node, ubii_services_ServiceRequest *request,
+                                        uint32_t timeout_ms, ubii_reply_fn fn, void *user)
+{
+    ubii__copy_string(request->type.device.client_id, sizeof request->type.device.client_id,
+                      node->client_id);
+    return ubii_call(node, request, timeout_ms, fn, user);
+}
+
 ubii_status ubii_register_device(ubii_node *node, const ubii_devices_Device *device,
                                  uint32_t timeout_ms, ubii_reply_fn fn, void *user)
 {
@@ -11,13 +27,9 @@ ubii_status ubii_register_device(ubii_node *node, const ubii_devices_Device *dev
         return UBII_ERR_INVALID_ARGUMENT;
     }
     ubii_services_ServiceRequest request;
-    memset(&request, 0, sizeof request);
-    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_DEVICE_REGISTRATION);
-    request.which_type = ubii_services_ServiceRequest_device_tag;
+    device_request(UBII_SERVICE_DEVICE_REGISTRATION, &request);
     request.type.device = *device;
-    ubii__copy_string(request.type.device.client_id, sizeof request.type.device.client_id,
-                      node->client_id);
-    return ubii_call(node, &request, timeout_ms, fn, user);
+    return call_for_this_client(node, &request, timeout_ms, fn, user);
 }
 
 ubii_status ubii_deregister_device(ubii_node *node, const char *device_id, uint32_t timeout_ms,
@@ -27,13 +39,9 @@ ubii_status ubii_deregister_device(ubii_node *node, const char *device_id, uint3
         return UBII_ERR_INVALID_ARGUMENT;
     }
     ubii_services_ServiceRequest request;
-    memset(&request, 0, sizeof request);
-    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_DEVICE_DEREGISTRATION);
-    request.which_type = ubii_services_ServiceRequest_device_tag;
+    device_request(UBII_SERVICE_DEVICE_DEREGISTRATION, &request);
     if (!ubii__copy_string(request.type.device.id, sizeof request.type.device.id, device_id)) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
-    ubii__copy_string(request.type.device.client_id, sizeof request.type.device.client_id,
-                      node->client_id);
-    return ubii_call(node, &request, timeout_ms, fn, user);
+    return call_for_this_client(node, &request, timeout_ms, fn, user);
 }
