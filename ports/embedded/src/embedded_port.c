@@ -330,17 +330,12 @@ enum { REFILLS_PER_WAIT = 8 };
 static ubii_status wait_for_io(void *context, int timeout_ms)
 {
     ubii_embedded_port *port = context;
-    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
-        port->channels[i].refills = REFILLS_PER_WAIT;
-    }
     struct pollfd fds[UBII_CHANNEL_COUNT];
     ubii__embedded_channel *owners[UBII_CHANNEL_COUNT];
     nfds_t count = 0;
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
         ubii__embedded_channel *ch = &port->channels[i];
-        if (ch->fd < 0) {
-            continue;
-        }
+        ch->refills = REFILLS_PER_WAIT;
         flush(port, ch); /* what was queued since the last wait, in as few sends as it takes */
         if (ch->fd < 0) {
             continue;
