@@ -298,7 +298,8 @@ static void on_connected(ubii_embedded_port *port, ubii__embedded_channel *ch)
 static void read_input(ubii_embedded_port *port, ubii__embedded_channel *ch)
 {
     while (ch->fd >= 0 && wants_input(ch) && ch->rx_used < UBII_EMBEDDED_BUFFER) {
-        ssize_t got = recv(ch->fd, ch->rx + ch->rx_used, UBII_EMBEDDED_BUFFER - ch->rx_used, 0);
+        size_t room = UBII_EMBEDDED_BUFFER - ch->rx_used;
+        ssize_t got = recv(ch->fd, ch->rx + ch->rx_used, room, 0);
         if (got > 0) {
             size_t drop = ch->discard < (uint64_t)got ? (size_t)ch->discard : (size_t)got;
             if (drop > 0) { /* the rest of a dropped over-size message */
@@ -306,8 +307,14 @@ static void read_input(ubii_embedded_port *port, ubii__embedded_channel *ch)
                 ch->discard -= drop;
             }
             ch->rx_used += (size_t)got - drop;
+            /* A short read took all the socket had: asking again would only say EAGAIN. */
+            ch->drained = (size_t)got < room;
+            if (ch->drained) {
+                return;
+            }
             continue;
         }
+        ch->drained = true;
         if (got == 0) {
             if (ch->protocol == PROTOCOL_HTTP) { /* the reply may end with the connection */
                 close(ch->fd);
@@ -509,7 +516,8 @@ static ubii_status receive(void *context, ubii_channel which, const uint8_t **da
             }
             return UBII_ERR_TOO_LARGE;
         }
-        if (result == PARSE_NEED_MORE && ch->protocol != PROTOCOL_HTTP && ch->refills > 0) {
+        if (result == PARSE_NEED_MORE && ch->protocol != PROTOCOL_HTTP && ch->refills > 0 &&
+            !ch->drained) {
             size_t buffered = ch->rx_used;
             ch->refills--;
             read_input(port, ch);

@@ -7,17 +7,7 @@
 #include <strings.h>
 
 #include "embedded_internal.h"
-
-enum {
-    OPCODE_CONTINUATION = 0,
-    OPCODE_TEXT = 1,
-    OPCODE_BINARY = 2,
-    OPCODE_CLOSE = 8,
-    OPCODE_PING = 9,
-    OPCODE_PONG = 10,
-    FIN = 0x80,
-    MASKED = 0x80
-};
+#include "websocket_frame.h"
 
 static ubii_status on_connected(ubii_embedded_port *port, ubii__embedded_channel *ch)
 {
@@ -112,9 +102,9 @@ static bool read_header(const ubii__embedded_channel *ch, size_t at, bool *fin, 
     if (ch->rx_used < at + 2) {
         return false;
     }
-    *fin = ch->rx[at] & FIN;
+    *fin = ch->rx[at] & UBII_WS_FIN;
     *opcode = ch->rx[at] & 0x0F;
-    *masked = ch->rx[at + 1] & MASKED;
+    *masked = ch->rx[at + 1] & UBII_WS_MASKED;
     uint64_t length = ch->rx[at + 1] & 0x7F;
     size_t header = 2;
     if (length == 126 || length == 127) {
@@ -160,7 +150,7 @@ static parse_result parse(ubii_embedded_port *port, ubii__embedded_channel *ch,
             return PARSE_ERROR;
         }
         if (frame_size > UBII_EMBEDDED_MAX_MESSAGE) {
-            if (at != 0 || opcode == OPCODE_CONTINUATION) {
+            if (at != 0 || opcode == UBII_WS_OPCODE_CONTINUATION) {
                 ubii__embedded_error(port, "WebSocket fragment over UBII_EMBEDDED_MAX_MESSAGE");
                 return PARSE_ERROR;
             }
@@ -170,14 +160,15 @@ static parse_result parse(ubii_embedded_port *port, ubii__embedded_channel *ch,
             break;
         }
         size_t next = payload + (size_t)frame_size;
-        if (opcode >= OPCODE_CLOSE) {
-            if (opcode == OPCODE_CLOSE) {
+        if (opcode >= UBII_WS_OPCODE_CLOSE) {
+            if (opcode == UBII_WS_OPCODE_CLOSE) {
                 ubii__embedded_error(port, "WebSocket closed by the master");
                 return PARSE_ERROR;
             }
             if (message_opcode < 0) { /* a control frame on its own */
-                if (opcode == OPCODE_PING) {
-                    send_control(port, ch, OPCODE_PONG, ch->rx + payload, (size_t)frame_size);
+                if (opcode == UBII_WS_OPCODE_PING) {
+                    send_control(port, ch, UBII_WS_OPCODE_PONG, ch->rx + payload,
+                                 (size_t)frame_size);
                 }
                 *consumed = next;
                 return PARSE_SKIP;
@@ -185,8 +176,9 @@ static parse_result parse(ubii_embedded_port *port, ubii__embedded_channel *ch,
             at = next; /* between fragments: dealt with when joining */
             continue;
         }
-        if ((message_opcode < 0) != (opcode != OPCODE_CONTINUATION) ||
-            (opcode != OPCODE_CONTINUATION && opcode != OPCODE_TEXT && opcode != OPCODE_BINARY)) {
+        if ((message_opcode < 0) != (opcode != UBII_WS_OPCODE_CONTINUATION) ||
+            (opcode != UBII_WS_OPCODE_CONTINUATION && opcode != UBII_WS_OPCODE_TEXT &&
+             opcode != UBII_WS_OPCODE_BINARY)) {
             ubii__embedded_error(port, "WebSocket fragments out of order");
             return PARSE_ERROR;
         }
@@ -213,15 +205,15 @@ static parse_result parse(ubii_embedded_port *port, ubii__embedded_channel *ch,
         /* The first pass checked every header; the initial values only quiet -O3's
          * maybe-uninitialized analysis, which cannot see that. */
         bool fin = true, masked = false;
-        int opcode = OPCODE_CLOSE;
+        int opcode = UBII_WS_OPCODE_CLOSE;
         size_t payload = 0;
         uint64_t frame_size = 0;
         read_header(ch, at, &fin, &opcode, &payload, &frame_size, &masked);
         size_t next = payload + (size_t)frame_size;
-        if (opcode == OPCODE_PING) {
-            send_control(port, ch, OPCODE_PONG, ch->rx + payload, (size_t)frame_size);
+        if (opcode == UBII_WS_OPCODE_PING) {
+            send_control(port, ch, UBII_WS_OPCODE_PONG, ch->rx + payload, (size_t)frame_size);
         }
-        if (opcode < OPCODE_CLOSE) {
+        if (opcode < UBII_WS_OPCODE_CLOSE) {
             memmove(ch->rx + joined, ch->rx + payload, (size_t)frame_size);
             joined += (size_t)frame_size;
         }
@@ -229,13 +221,13 @@ static parse_result parse(ubii_embedded_port *port, ubii__embedded_channel *ch,
         memmove(ch->rx + joined, ch->rx + next, ch->rx_used - next);
         ch->rx_used -= next - joined;
         at = joined;
-        if (opcode < OPCODE_CLOSE && fin) {
+        if (opcode < UBII_WS_OPCODE_CLOSE && fin) {
             break;
         }
     }
     *data = ch->rx;
     *size = joined;
-    *flags = message_opcode == OPCODE_TEXT ? UBII_MESSAGE_TEXT : 0;
+    *flags = message_opcode == UBII_WS_OPCODE_TEXT ? UBII_MESSAGE_TEXT : 0;
     *consumed = joined;
     return PARSE_MESSAGE;
 }
@@ -243,38 +235,27 @@ static parse_result parse(ubii_embedded_port *port, ubii__embedded_channel *ch,
 static size_t header_size(const ubii__embedded_channel *ch, size_t size)
 {
     (void)ch;
-    return (size < 126 ? 2 : size <= 0xFFFF ? 4 : 10) + 4; /* + masking key */
+    return ubii__ws_client_header_size(size);
 }
 
 static void frame_opcode(ubii_embedded_port *port, ubii__embedded_channel *ch, size_t at,
                          size_t size, int opcode)
 {
-    uint8_t *p = ch->tx + at - header_size(ch, size);
-    *p++ = (uint8_t)(FIN | opcode);
-    if (size < 126) {
-        *p++ = (uint8_t)(MASKED | size);
-    } else if (size <= 0xFFFF) {
-        *p++ = MASKED | 126;
-        *p++ = (uint8_t)(size >> 8);
-        *p++ = (uint8_t)size;
-    } else {
-        *p++ = MASKED | 127;
-        for (int shift = 56; shift >= 0; shift -= 8) {
-            *p++ = (uint8_t)((uint64_t)size >> shift);
-        }
+    if (port->mask_pool_left < 4) {
+        port->platform.random_bytes(port->platform.user, port->mask_pool, sizeof port->mask_pool);
+        port->mask_pool_left = sizeof port->mask_pool;
     }
-    uint8_t mask[4];
-    port->platform.random_bytes(port->platform.user, mask, sizeof mask);
-    memcpy(p, mask, sizeof mask);
-    for (size_t i = 0; i < size; ++i) {
-        ch->tx[at + i] ^= mask[i & 3];
-    }
+    port->mask_pool_left -= 4;
+    const uint8_t *mask = port->mask_pool + port->mask_pool_left;
+    ubii__ws_write_client_header(ch->tx + at - header_size(ch, size), opcode, size, mask);
+    ubii__ws_mask(ch->tx + at, size, mask);
 }
 
 static void frame(ubii_embedded_port *port, ubii__embedded_channel *ch, size_t at, size_t size,
                   unsigned flags)
 {
-    frame_opcode(port, ch, at, size, flags & UBII_MESSAGE_TEXT ? OPCODE_TEXT : OPCODE_BINARY);
+    frame_opcode(port, ch, at, size,
+                 flags & UBII_MESSAGE_TEXT ? UBII_WS_OPCODE_TEXT : UBII_WS_OPCODE_BINARY);
 }
 
 static void send_control(ubii_embedded_port *port, ubii__embedded_channel *ch, int opcode,

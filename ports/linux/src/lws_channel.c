@@ -18,6 +18,7 @@
 #include <libwebsockets.h>
 
 #include "linux_port.h"
+#include "websocket_frame.h"
 
 enum {
     RX_CHUNK = 64 * 1024,
@@ -27,8 +28,15 @@ enum {
      * makes libwebsockets 4.1 spin in its forced-service loop on TLS connections. */
     INBOX_LIMIT_COUNT = 16384,
     INBOX_LIMIT_BYTES = 256 * 1024 * 1024,
-    OUTBOX_LIMIT_COUNT = 4096
+    OUTBOX_LIMIT_COUNT = 4096,
+    /* Frames handed to libwebsockets in one write: below its per-write limit (RX_CHUNK), so one
+     * send(2) carries them all. */
+    BATCH_BYTES = 32 * 1024,
+    MASK_POOL = 256
 };
+
+/* Outgoing messages keep LWS_PRE bytes before their data: room for a frame header. */
+typedef char headroom_holds_a_frame_header[LWS_PRE >= UBII_WS_MAX_CLIENT_HEADER ? 1 : -1];
 
 typedef struct lws_connection {
     ubii_linux_port *port;  /* NULL once the channel has let go of it */
@@ -41,6 +49,11 @@ typedef struct lws_connection {
     size_t assembled;
     size_t assembly_capacity;
     unsigned assembly_flags;
+    /* WebSocket: outgoing frames gathered for one write (LWS_PRE + BATCH_BYTES), and masking
+     * keys fetched from lws's random source MASK_POOL bytes at a time. */
+    uint8_t *batch;
+    uint8_t masks[MASK_POOL];
+    size_t masks_left;
     /* HTTP: the request body (after LWS_PRE bytes) and the response. */
     uint8_t *request;
     size_t request_size;
@@ -125,6 +138,8 @@ static void detach(lws_connection *connection)
 {
     free(connection->assembly);
     connection->assembly = NULL;
+    free(connection->batch);
+    connection->batch = NULL;
     free(connection->request);
     connection->request = NULL;
     connection->port = NULL;
@@ -182,6 +197,75 @@ static bool parse_url(const char *url, lws_channel *ch, bool *tls, bool *websock
 
 /* ---- the lws context ----------------------------------------------------------------------------
  */
+
+static const uint8_t *next_mask(lws_connection *connection, struct lws *wsi)
+{
+    if (connection->masks_left < 4) {
+        if (lws_get_random(lws_get_context(wsi), connection->masks, MASK_POOL) != MASK_POOL) {
+            return NULL;
+        }
+        connection->masks_left = MASK_POOL;
+    }
+    connection->masks_left -= 4;
+    return connection->masks + connection->masks_left;
+}
+
+/* Frames the message at `payload` in place: header written just before it, payload masked.
+ * Returns where the frame starts, or NULL without a masking key. */
+static uint8_t *frame_in_place(lws_connection *connection, struct lws *wsi, uint8_t *payload,
+                               size_t size, unsigned flags)
+{
+    const uint8_t *mask = next_mask(connection, wsi);
+    if (mask == NULL) {
+        return NULL;
+    }
+    uint8_t *header = payload - ubii__ws_client_header_size(size);
+    int opcode = flags & UBII_MESSAGE_TEXT ? UBII_WS_OPCODE_TEXT : UBII_WS_OPCODE_BINARY;
+    ubii__ws_write_client_header(header, opcode, size, mask);
+    ubii__ws_mask(payload, size, mask);
+    return header;
+}
+
+/* Writes the outbox's first messages as whole frames in one lws_write: as many as fit
+ * BATCH_BYTES, or one larger message framed in its own headroom. libwebsockets would frame
+ * each message with a write (and a read of its random source) of its own. The frames go as raw
+ * bytes; lws keeps whatever the socket does not take and sends it before anything else. */
+static const char *write_frames(lws_connection *connection, lws_channel *ch, struct lws *wsi)
+{
+    queued_message *message = ch->outbox.head;
+    size_t framed = ubii__ws_client_header_size(message->size) + message->size;
+    uint8_t *start;
+    size_t length;
+    if (framed > BATCH_BYTES) {
+        pop(&ch->outbox);
+        start = frame_in_place(connection, wsi, message->data, message->size, message->flags);
+        int written = start != NULL ? lws_write(wsi, start, framed, LWS_WRITE_RAW) : 0;
+        free(message);
+        return start == NULL ? "no random bytes for WebSocket masking keys"
+               : written < 0 ? "WebSocket write failed"
+                             : NULL;
+    }
+    if (connection->batch == NULL && (connection->batch = malloc(LWS_PRE + BATCH_BYTES)) == NULL) {
+        return "out of memory for outgoing WebSocket frames";
+    }
+    start = connection->batch + LWS_PRE;
+    length = 0;
+    while ((message = ch->outbox.head) != NULL &&
+           length + (framed = ubii__ws_client_header_size(message->size) + message->size) <=
+               BATCH_BYTES) {
+        pop(&ch->outbox);
+        uint8_t *payload = start + length + (framed - message->size);
+        memcpy(payload, message->data, message->size);
+        bool masked =
+            frame_in_place(connection, wsi, payload, message->size, message->flags) != NULL;
+        free(message);
+        if (!masked) {
+            return "no random bytes for WebSocket masking keys";
+        }
+        length += framed;
+    }
+    return lws_write(wsi, start, length, LWS_WRITE_RAW) < 0 ? "WebSocket write failed" : NULL;
+}
 
 static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
                         size_t len);
@@ -400,23 +484,19 @@ static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void 
             deliver_assembled(connection, ch);
         }
         break;
-    case LWS_CALLBACK_CLIENT_WRITEABLE: {
+    case LWS_CALLBACK_CLIENT_WRITEABLE:
         if (ch == NULL) {
             return -1; /* the channel was closed: end the connection */
         }
-        /* As many as the socket takes now: one per callback would cap a node polled once per
-         * frame at one message per frame. */
-        queued_message *message;
-        while ((message = pop(&ch->outbox)) != NULL) {
-            enum lws_write_protocol kind =
-                message->flags & UBII_MESSAGE_TEXT ? LWS_WRITE_TEXT : LWS_WRITE_BINARY;
-            int written = lws_write(wsi, message->data, message->size, kind);
-            free(message);
-            if (written < 0) {
-                lose(connection, "WebSocket write failed", NULL);
+        /* As much as the socket takes now: one message per callback would cap a node polled
+         * once per frame at one message per frame. */
+        while (ch->outbox.count > 0) {
+            const char *failure = write_frames(connection, ch, wsi);
+            if (failure != NULL) {
+                lose(connection, failure, NULL);
                 return -1;
             }
-            if (lws_send_pipe_choked(wsi)) {
+            if (ch->outbox.count == 0 || lws_send_pipe_choked(wsi)) {
                 break;
             }
         }
@@ -424,7 +504,6 @@ static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void 
             lws_callback_on_writable(wsi);
         }
         break;
-    }
     case LWS_CALLBACK_CLIENT_CONNECTION_ERROR:
         lose(connection, "WebSocket connection failed", in != NULL ? (const char *)in : NULL);
         break;

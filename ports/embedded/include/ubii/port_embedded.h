@@ -64,6 +64,7 @@ typedef struct ubii__embedded_channel {
     uint8_t zmq_type; /* REQ or DEALER */
     uint8_t step;     /* within the handshake, or within an HTTP reply */
     uint8_t refills;  /* further reads receive() may still do before the next wait */
+    bool drained;     /* the last read emptied the socket: another would find nothing */
     ubii_channel_state state;
     uint32_t address; /* IPv4, network order */
     uint16_t port;
@@ -95,6 +96,10 @@ typedef struct ubii_embedded_port {
     uint8_t service_buffer[UBII_EMBEDDED_BUFFER];
     uint8_t topic_rx[UBII_EMBEDDED_BUFFER];
     uint8_t topic_tx[UBII_EMBEDDED_BUFFER];
+    /* WebSocket masking keys, drawn from the platform in bulk: a getrandom per message would cost
+     * more kernel time than the rest of sending it. */
+    uint8_t mask_pool[64];
+    uint8_t mask_pool_left;
     uint32_t decode_errors; /* malformed frames from the master, dropped */
     char last_error[96];
 } ubii_embedded_port;
