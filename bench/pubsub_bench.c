@@ -8,7 +8,8 @@
  * of FRAME_US microseconds, sleeping in between.
  * Prints one line of key=value figures (bench/run.sh puts them beside the Node.js node's).
  *
- *   pubsub_bench SERVICE_URL TOPIC_URL [ROUNDS [MESSAGES [WINDOW [FRAME_US]]]] */
+ *   pubsub_bench SERVICE_URL TOPIC_URL [ROUNDS [MESSAGES [WINDOW [FRAME_US]]]]
+ * On the Linux port, UBII_BENCH_ZMQ_ENGINE=in-thread speaks tcp:// with UBII_LINUX_ZMQ_IN_THREAD. */
 #define _POSIX_C_SOURCE 200809L
 
 #include <math.h>
@@ -107,7 +108,13 @@ int main(int argc, char **argv)
     ubii_linux_port_options options = {0};
     options.libwebsockets_log_level = 1;
     /* A ZMQ-only application need not start libwebsockets at all. */
-    options.zmq_only = strncmp(argv[1], "tcp://", 6) == 0 && strncmp(argv[2], "tcp://", 6) == 0;
+    const char *engine = getenv("UBII_BENCH_ZMQ_ENGINE");
+    if (engine != NULL && strcmp(engine, "in-thread") == 0) {
+        options.zmq_engine = UBII_LINUX_ZMQ_IN_THREAD;
+    } else {
+        options.zmq_only =
+            strncmp(argv[1], "tcp://", 6) == 0 && strncmp(argv[2], "tcp://", 6) == 0;
+    }
     ubii_linux_port *port;
     if (ubii_linux_port_create(&port, &options) != UBII_OK) {
         return 1;

@@ -1,3 +1,5 @@
+#include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 #include "test_port.h"
@@ -16,6 +18,11 @@ TestPort::TestPort(Tls tls) : impl_(std::make_unique<Impl>())
     options.libwebsockets_log_level = 1;  // LLL_ERR: no notice per HTTP transaction
     options.enable_tls = tls != Tls::off; // only the TLS tests need it
     options.allow_self_signed = tls == Tls::allow_self_signed;
+    // The suite runs once per tcp:// engine (tests/CMakeLists.txt).
+    const char *engine = std::getenv("UBII_TEST_ZMQ_ENGINE");
+    if (engine != nullptr && std::strcmp(engine, "in-thread") == 0) {
+        options.zmq_engine = UBII_LINUX_ZMQ_IN_THREAD;
+    }
     if (ubii_linux_port_create(&impl_->port, &options) != UBII_OK) {
         throw std::runtime_error("cannot create the Linux port");
     }

@@ -16,7 +16,8 @@ static bool starts_with(const char *text, const char *prefix)
 
 static bool uses_lws(const channel *ch)
 {
-    return ch->kind == TRANSPORT_WEBSOCKET || ch->kind == TRANSPORT_HTTP;
+    return ch->kind == TRANSPORT_WEBSOCKET || ch->kind == TRANSPORT_HTTP ||
+           ch->kind == TRANSPORT_ZMTP;
 }
 
 static void close_channel(void *context, ubii_channel which)
@@ -47,7 +48,7 @@ static ubii_status open_channel(void *context, ubii_channel which, const char *u
     close_channel(port, which);
     channel *ch = &port->channels[which];
     port->last_error[0] = '\0';
-    if (starts_with(url, "tcp://")) {
+    if (starts_with(url, "tcp://") && port->options.zmq_engine == UBII_LINUX_ZMQ_LIBZMQ) {
         ubii_status status = ubii__zmq_open(port, which, url, client_id);
         if (status == UBII_OK) {
             ch->kind = TRANSPORT_ZMQ;
@@ -56,8 +57,8 @@ static ubii_status open_channel(void *context, ubii_channel which, const char *u
         }
         return status;
     }
-    if (starts_with(url, "ws://") || starts_with(url, "wss://") || starts_with(url, "http://") ||
-        starts_with(url, "https://")) {
+    if (starts_with(url, "tcp://") || starts_with(url, "ws://") || starts_with(url, "wss://") ||
+        starts_with(url, "http://") || starts_with(url, "https://")) {
         ubii_status status = ubii__lws_open(port, which, url, client_id);
         if (status != UBII_OK) {
             close_channel(port, which);
@@ -240,6 +241,12 @@ ubii_status ubii_linux_port_create(ubii_linux_port **result, const ubii_linux_po
     }
     if (options != NULL) {
         port->options = *options;
+    }
+    if ((port->options.zmq_engine != UBII_LINUX_ZMQ_LIBZMQ &&
+         port->options.zmq_engine != UBII_LINUX_ZMQ_IN_THREAD) ||
+        (port->options.zmq_engine == UBII_LINUX_ZMQ_IN_THREAD && port->options.zmq_only)) {
+        free(port);
+        return UBII_ERR_INVALID_ARGUMENT;
     }
     if (port->options.max_message_size == 0) {
         port->options.max_message_size = DEFAULT_MAX_MESSAGE_SIZE;

@@ -17,7 +17,8 @@ typedef enum transport_kind {
     TRANSPORT_NONE = 0,
     TRANSPORT_ZMQ = 1,
     TRANSPORT_WEBSOCKET = 2,
-    TRANSPORT_HTTP = 3
+    TRANSPORT_HTTP = 3,
+    TRANSPORT_ZMTP = 4 /* tcp:// spoken in the caller's thread over an lws raw socket */
 } transport_kind;
 
 /* A whole message waiting to be taken (received) or written (sent); data follows the header

@@ -17,48 +17,9 @@
 
 #include <libwebsockets.h>
 
-#include "linux_port.h"
+#include "lws_internal.h"
 #include "websocket_frame.h"
-
-enum {
-    RX_CHUNK = 64 * 1024,
-    /* Received messages waiting for the node, at most. The node drains the inbox at every poll,
-     * so this is only reached by an application that stops polling under a flood; the connection
-     * is then dropped (LOST, with a reason). Pausing the socket instead (lws_rx_flow_control)
-     * makes libwebsockets 4.1 spin in its forced-service loop on TLS connections. */
-    INBOX_LIMIT_COUNT = 16384,
-    INBOX_LIMIT_BYTES = 256 * 1024 * 1024,
-    OUTBOX_LIMIT_COUNT = 4096,
-    /* Frames handed to libwebsockets in one write: below its per-write limit (RX_CHUNK), so one
-     * send(2) carries them all. */
-    BATCH_BYTES = 32 * 1024,
-    MASK_POOL = 256
-};
-
-/* Outgoing messages keep LWS_PRE bytes before their data: room for a frame header. */
-typedef char headroom_holds_a_frame_header[LWS_PRE >= UBII_WS_MAX_CLIENT_HEADER ? 1 : -1];
-
-typedef struct lws_connection {
-    ubii_linux_port *port;  /* NULL once the channel has let go of it */
-    ubii_linux_port *owner; /* the port, always: counts its live connections */
-    ubii_channel which;
-    struct lws *wsi;
-    bool http;
-    /* WebSocket: the message being assembled from fragments. */
-    uint8_t *assembly;
-    size_t assembled;
-    size_t assembly_capacity;
-    unsigned assembly_flags;
-    /* WebSocket: outgoing frames gathered for one write (LWS_PRE + BATCH_BYTES), and masking
-     * keys fetched from lws's random source MASK_POOL bytes at a time. */
-    uint8_t *batch;
-    uint8_t masks[MASK_POOL];
-    size_t masks_left;
-    /* HTTP: the request body (after LWS_PRE bytes) and the response. */
-    uint8_t *request;
-    size_t request_size;
-    int status;
-} lws_connection;
+#include "zmtp_wire.h"
 
 /* ---- queues -----------------------------------------------------------------------------------
  */
@@ -114,23 +75,25 @@ static void clear(message_queue *queue)
 /* ---- helpers ----------------------------------------------------------------------------------
  */
 
-static void set_error(ubii_linux_port *port, const char *what, const char *detail)
+void ubii__lws_set_error(ubii_linux_port *port, const char *what, const char *detail)
 {
     snprintf(port->last_error, sizeof port->last_error, "%s%s%s", what, detail ? ": " : "",
              detail ? detail : "");
 }
 
-static lws_channel *channel_of(lws_connection *connection)
+lws_channel *ubii__lws_channel_of(lws_connection *connection)
 {
     return connection->port != NULL ? &connection->port->channels[connection->which].lws : NULL;
 }
 
-static void lose(lws_connection *connection, const char *what, const char *detail)
+void ubii__lws_lose(lws_connection *connection, const char *what, const char *detail)
 {
-    if (connection->port == NULL) {
+    /* The first reason is the one to tell: the close that follows a refusal is no news. */
+    if (connection->port == NULL ||
+        connection->port->channels[connection->which].state == UBII_CHANNEL_LOST) {
         return;
     }
-    set_error(connection->port, what, detail);
+    ubii__lws_set_error(connection->port, what, detail);
     connection->port->channels[connection->which].state = UBII_CHANNEL_LOST;
 }
 
@@ -145,19 +108,28 @@ static void detach(lws_connection *connection)
     connection->port = NULL;
 }
 
-/* Parses scheme://host[:port][/path]; IPv6 hosts in brackets. */
-static bool parse_url(const char *url, lws_channel *ch, bool *tls, bool *websocket)
+/* Parses scheme://host[:port][/path]; IPv6 hosts in brackets. tcp:// needs the port. */
+static bool parse_url(const char *url, lws_channel *ch, transport_kind *kind)
 {
-    const char *rest;
-    if (strncmp(url, "ws://", 5) == 0 || strncmp(url, "http://", 7) == 0) {
-        *tls = false;
-    } else if (strncmp(url, "wss://", 6) == 0 || strncmp(url, "https://", 8) == 0) {
-        *tls = true;
-    } else {
-        return false;
+    static const struct {
+        const char *scheme;
+        transport_kind kind;
+        bool tls;
+        int default_port;
+    } schemes[] = {{"ws://", TRANSPORT_WEBSOCKET, false, 80},
+                   {"wss://", TRANSPORT_WEBSOCKET, true, 443},
+                   {"http://", TRANSPORT_HTTP, false, 80},
+                   {"https://", TRANSPORT_HTTP, true, 443},
+                   {"tcp://", TRANSPORT_ZMTP, false, 0}};
+    size_t which = 0;
+    while (strncmp(url, schemes[which].scheme, strlen(schemes[which].scheme)) != 0) {
+        if (++which == sizeof schemes / sizeof schemes[0]) {
+            return false;
+        }
     }
-    *websocket = url[0] == 'w';
-    rest = strstr(url, "://") + 3;
+    *kind = schemes[which].kind;
+    ch->tls = schemes[which].tls;
+    const char *rest = url + strlen(schemes[which].scheme);
     const char *host_end;
     const char *host = rest;
     if (*rest == '[') {
@@ -177,7 +149,7 @@ static bool parse_url(const char *url, lws_channel *ch, bool *tls, bool *websock
     }
     memcpy(ch->host, host, host_length);
     ch->host[host_length] = '\0';
-    ch->port = *tls ? 443 : 80;
+    ch->port = schemes[which].default_port;
     if (*rest == ':') {
         char *end;
         long port = strtol(rest + 1, &end, 10);
@@ -186,6 +158,9 @@ static bool parse_url(const char *url, lws_channel *ch, bool *tls, bool *websock
         }
         ch->port = (int)port;
         rest = end;
+    }
+    if (ch->port == 0 || (*kind == TRANSPORT_ZMTP && *rest != '\0')) {
+        return false; /* tcp:// is host and port, nothing more */
     }
     const char *path = *rest != '\0' ? rest : "/";
     if (strlen(path) + 1 > sizeof ch->path) {
@@ -210,16 +185,26 @@ static const uint8_t *next_mask(lws_connection *connection, struct lws *wsi)
     return connection->masks + connection->masks_left;
 }
 
-/* Frames the message at `payload` in place: header written just before it, payload masked.
- * Returns where the frame starts, or NULL without a masking key. */
+static size_t framing_size(const lws_connection *connection, size_t size)
+{
+    return connection->zmtp ? ubii__zmtp_header_size(connection->zmtp_request, size)
+                            : ubii__ws_client_header_size(size);
+}
+
+/* Frames the message at `payload` in place: header written just before it, and for WebSocket
+ * the payload masked. Returns where the frame starts, or NULL without a masking key. */
 static uint8_t *frame_in_place(lws_connection *connection, struct lws *wsi, uint8_t *payload,
                                size_t size, unsigned flags)
 {
+    uint8_t *header = payload - framing_size(connection, size);
+    if (connection->zmtp) {
+        ubii__zmtp_write_header(header, connection->zmtp_request, size);
+        return header;
+    }
     const uint8_t *mask = next_mask(connection, wsi);
     if (mask == NULL) {
         return NULL;
     }
-    uint8_t *header = payload - ubii__ws_client_header_size(size);
     int opcode = flags & UBII_MESSAGE_TEXT ? UBII_WS_OPCODE_TEXT : UBII_WS_OPCODE_BINARY;
     ubii__ws_write_client_header(header, opcode, size, mask);
     ubii__ws_mask(payload, size, mask);
@@ -227,13 +212,15 @@ static uint8_t *frame_in_place(lws_connection *connection, struct lws *wsi, uint
 }
 
 /* Writes the outbox's first messages as whole frames in one lws_write: as many as fit
- * BATCH_BYTES, or one larger message framed in its own headroom. libwebsockets would frame
- * each message with a write (and a read of its random source) of its own. The frames go as raw
- * bytes; lws keeps whatever the socket does not take and sends it before anything else. */
+ * BATCH_BYTES, or one larger message framed in its own headroom. (libwebsockets would frame each
+ * WebSocket message with a write, and a read of its random source, of its own.) The frames go as
+ * raw bytes; lws keeps whatever the socket does not take and sends it before anything else. */
 static const char *write_frames(lws_connection *connection, lws_channel *ch, struct lws *wsi)
 {
+    static const char no_mask[] = "no random bytes for WebSocket masking keys";
+    static const char write_failed[] = "write to the master failed";
     queued_message *message = ch->outbox.head;
-    size_t framed = ubii__ws_client_header_size(message->size) + message->size;
+    size_t framed = framing_size(connection, message->size) + message->size;
     uint8_t *start;
     size_t length;
     if (framed > BATCH_BYTES) {
@@ -241,30 +228,92 @@ static const char *write_frames(lws_connection *connection, lws_channel *ch, str
         start = frame_in_place(connection, wsi, message->data, message->size, message->flags);
         int written = start != NULL ? lws_write(wsi, start, framed, LWS_WRITE_RAW) : 0;
         free(message);
-        return start == NULL ? "no random bytes for WebSocket masking keys"
-               : written < 0 ? "WebSocket write failed"
-                             : NULL;
+        return start == NULL ? no_mask : written < 0 ? write_failed : NULL;
     }
     if (connection->batch == NULL && (connection->batch = malloc(LWS_PRE + BATCH_BYTES)) == NULL) {
-        return "out of memory for outgoing WebSocket frames";
+        return "out of memory for outgoing frames";
     }
     start = connection->batch + LWS_PRE;
     length = 0;
     while ((message = ch->outbox.head) != NULL &&
-           length + (framed = ubii__ws_client_header_size(message->size) + message->size) <=
+           length + (framed = framing_size(connection, message->size) + message->size) <=
                BATCH_BYTES) {
         pop(&ch->outbox);
         uint8_t *payload = start + length + (framed - message->size);
         memcpy(payload, message->data, message->size);
-        bool masked =
+        bool framed_ok =
             frame_in_place(connection, wsi, payload, message->size, message->flags) != NULL;
         free(message);
-        if (!masked) {
-            return "no random bytes for WebSocket masking keys";
+        if (!framed_ok) {
+            return no_mask;
         }
         length += framed;
     }
-    return lws_write(wsi, start, length, LWS_WRITE_RAW) < 0 ? "WebSocket write failed" : NULL;
+    return lws_write(wsi, start, length, LWS_WRITE_RAW) < 0 ? write_failed : NULL;
+}
+
+int ubii__lws_write_outbox(lws_connection *connection, lws_channel *ch, struct lws *wsi)
+{
+    /* As much as the socket takes now: one message per callback would cap a node polled once per
+     * frame at one message per frame. */
+    while (ch->outbox.count > 0) {
+        const char *failure = write_frames(connection, ch, wsi);
+        if (failure != NULL) {
+            ubii__lws_lose(connection, failure, NULL);
+            return -1;
+        }
+        if (ch->outbox.count == 0 || lws_send_pipe_choked(wsi)) {
+            break;
+        }
+    }
+    if (ch->outbox.count > 0) {
+        lws_callback_on_writable(wsi);
+    }
+    return 0;
+}
+
+lws_connection *ubii__lws_new_connection(ubii_linux_port *port, ubii_channel which)
+{
+    lws_connection *connection = calloc(1, sizeof *connection);
+    if (connection != NULL) {
+        connection->port = port;
+        connection->owner = port;
+        connection->which = which;
+        port->lws_connections++;
+    }
+    return connection;
+}
+
+void ubii__lws_connect(ubii_linux_port *port, ubii_channel which, lws_connection *connection,
+                       struct lws_client_connect_info *info, const char *failure)
+{
+    lws_channel *ch = &port->channels[which].lws;
+    ch->connection = connection;
+    connection->wsi = lws_client_connect_via_info(info);
+    if (connection->wsi == NULL && ch->connection == connection) {
+        /* Failed at once (lws may already have reported it and freed nothing). */
+        ch->connection = NULL;
+        port->lws_connections--;
+        detach(connection);
+        free(connection);
+        port->channels[which].state = UBII_CHANNEL_LOST;
+        ubii__lws_set_error(port, failure, NULL);
+    }
+}
+
+void ubii__lws_connection_destroyed(lws_connection *connection, struct lws *wsi, const char *what)
+{
+    lws_channel *ch = ubii__lws_channel_of(connection);
+    if (ch != NULL) {
+        ch->connection = NULL;
+        if (connection->port->channels[connection->which].state != UBII_CHANNEL_CLOSED) {
+            ubii__lws_lose(connection, what, NULL);
+        }
+    }
+    connection->owner->lws_connections--;
+    detach(connection);
+    free(connection);
+    lws_set_opaque_user_data(wsi, NULL);
 }
 
 static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
@@ -278,6 +327,7 @@ static const struct lws_protocols protocols[] = {
     {"ubii-ws", on_websocket, 0, RX_CHUNK, 0, NULL, 0},
     {"ubii-http", on_http, 0, RX_CHUNK, 0, NULL, 0},
     {"ubii-zmq-wakeup", on_zmq_wakeup, 0, 0, 0, NULL, 0},
+    {"ubii-zmtp", ubii__lws_on_zmtp, 0, RX_CHUNK, 0, NULL, 0},
     {NULL, NULL, 0, 0, 0, NULL, 0}};
 
 bool ubii__lws_start(ubii_linux_port *port)
@@ -299,7 +349,7 @@ bool ubii__lws_start(ubii_linux_port *port)
     info.user = port;
     port->lws = lws_create_context(&info);
     if (port->lws == NULL) {
-        set_error(port, "libwebsockets context could not be created", NULL);
+        ubii__lws_set_error(port, "libwebsockets context could not be created", NULL);
         return false;
     }
     port->vhost = lws_get_vhost_by_name(port->lws, "default");
@@ -412,7 +462,7 @@ static int on_zmq_wakeup(struct lws *wsi, enum lws_callback_reasons reason, void
 /* ---- WebSocket ---------------------------------------------------------------------------------
  */
 
-static bool append(lws_connection *connection, const void *in, size_t len, size_t limit)
+bool ubii__lws_append(lws_connection *connection, const void *in, size_t len, size_t limit)
 {
     if (connection->assembled + len > limit) {
         return false;
@@ -434,20 +484,28 @@ static bool append(lws_connection *connection, const void *in, size_t len, size_
     return true;
 }
 
-static void deliver_assembled(lws_connection *connection, lws_channel *ch)
+void ubii__lws_deliver(lws_connection *connection, lws_channel *ch, const uint8_t *data,
+                       size_t size, unsigned flags)
 {
-    queued_message *message = new_message(connection->assembled, 0);
+    queued_message *message = new_message(size, 0);
     if (message == NULL) {
-        lose(connection, "out of memory for a received message", NULL);
+        ubii__lws_lose(connection, "out of memory for a received message", NULL);
         return;
     }
-    memcpy(message->data, connection->assembly, connection->assembled);
-    message->flags = connection->assembly_flags;
+    memcpy(message->data, data, size);
+    message->flags = flags;
     push(&ch->inbox, message);
-    connection->assembled = 0;
     if (ch->inbox.count > INBOX_LIMIT_COUNT || ch->inbox.bytes > INBOX_LIMIT_BYTES) {
-        lose(connection, "received messages piled up unread (is the node being polled?)", NULL);
+        ubii__lws_lose(connection, "received messages piled up unread (is the node being polled?)",
+                       NULL);
     }
+}
+
+static void deliver_assembled(lws_connection *connection, lws_channel *ch)
+{
+    ubii__lws_deliver(connection, ch, connection->assembly, connection->assembled,
+                      connection->assembly_flags);
+    connection->assembled = 0;
 }
 
 static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
@@ -458,7 +516,7 @@ static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void 
     if (connection == NULL) {
         return 0;
     }
-    lws_channel *ch = channel_of(connection);
+    lws_channel *ch = ubii__lws_channel_of(connection);
     switch (reason) {
     case LWS_CALLBACK_CLIENT_ESTABLISHED:
         if (ch != NULL) {
@@ -476,8 +534,8 @@ static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void 
             connection->assembled = 0;
             connection->assembly_flags = lws_frame_is_binary(wsi) ? 0 : UBII_MESSAGE_TEXT;
         }
-        if (!append(connection, in, len, connection->port->options.max_message_size)) {
-            lose(connection, "message over the size limit", NULL);
+        if (!ubii__lws_append(connection, in, len, connection->port->options.max_message_size)) {
+            ubii__lws_lose(connection, "message over the size limit", NULL);
             return -1;
         }
         if (lws_is_final_fragment(wsi) && lws_remaining_packet_payload(wsi) == 0) {
@@ -488,39 +546,16 @@ static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void 
         if (ch == NULL) {
             return -1; /* the channel was closed: end the connection */
         }
-        /* As much as the socket takes now: one message per callback would cap a node polled
-         * once per frame at one message per frame. */
-        while (ch->outbox.count > 0) {
-            const char *failure = write_frames(connection, ch, wsi);
-            if (failure != NULL) {
-                lose(connection, failure, NULL);
-                return -1;
-            }
-            if (ch->outbox.count == 0 || lws_send_pipe_choked(wsi)) {
-                break;
-            }
-        }
-        if (ch->outbox.count > 0) {
-            lws_callback_on_writable(wsi);
-        }
-        break;
+        return ubii__lws_write_outbox(connection, ch, wsi);
     case LWS_CALLBACK_CLIENT_CONNECTION_ERROR:
-        lose(connection, "WebSocket connection failed", in != NULL ? (const char *)in : NULL);
+        ubii__lws_lose(connection, "WebSocket connection failed",
+                       in != NULL ? (const char *)in : NULL);
         break;
     case LWS_CALLBACK_CLIENT_CLOSED:
-        lose(connection, "WebSocket closed by the master", NULL);
+        ubii__lws_lose(connection, "WebSocket closed by the master", NULL);
         break;
     case LWS_CALLBACK_WSI_DESTROY:
-        if (ch != NULL) {
-            ch->connection = NULL;
-            if (connection->port->channels[connection->which].state != UBII_CHANNEL_CLOSED) {
-                lose(connection, "WebSocket connection ended", NULL);
-            }
-        }
-        connection->owner->lws_connections--;
-        detach(connection);
-        free(connection);
-        lws_set_opaque_user_data(wsi, NULL);
+        ubii__lws_connection_destroyed(connection, wsi, "WebSocket connection ended");
         break;
     default:
         break;
@@ -529,9 +564,9 @@ static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void 
 }
 
 /* What both kinds of connection tell lws: where to, TLS, and the record to report to. */
-static void describe_connection(ubii_linux_port *port, const lws_channel *ch,
-                                lws_connection *connection, const char *path,
-                                struct lws_client_connect_info *info)
+void ubii__lws_describe_connection(ubii_linux_port *port, const lws_channel *ch,
+                                   lws_connection *connection, const char *path,
+                                   struct lws_client_connect_info *info)
 {
     memset(info, 0, sizeof *info);
     info->context = port->lws;
@@ -560,30 +595,16 @@ static ubii_status connect_websocket(ubii_linux_port *port, ubii_channel which,
     }
     snprintf(path, sizeof path, "%s%sclientID=%s", ch->path, strchr(ch->path, '?') ? "&" : "?",
              client_id);
-    lws_connection *connection = calloc(1, sizeof *connection);
+    lws_connection *connection = ubii__lws_new_connection(port, which);
     if (connection == NULL) {
         return UBII_ERR_TRANSPORT;
     }
-    connection->port = port;
-    connection->owner = port;
-    connection->which = which;
-    port->lws_connections++;
-
     struct lws_client_connect_info info;
-    describe_connection(port, ch, connection, path, &info);
+    ubii__lws_describe_connection(port, ch, connection, path, &info);
     info.ietf_version_or_minus_one = -1;
     info.local_protocol_name = "ubii-ws"; /* no Sec-WebSocket-Protocol: the master offers none */
-    ch->connection = connection;
     port->channels[which].state = UBII_CHANNEL_CONNECTING;
-    connection->wsi = lws_client_connect_via_info(&info);
-    if (connection->wsi == NULL && ch->connection == connection) {
-        /* Failed at once (lws may already have reported it and freed nothing). */
-        ch->connection = NULL;
-        port->lws_connections--;
-        free(connection);
-        port->channels[which].state = UBII_CHANNEL_LOST;
-        set_error(port, "WebSocket connection could not be started", NULL);
-    }
+    ubii__lws_connect(port, which, connection, &info, "WebSocket connection could not be started");
     return UBII_OK;
 }
 
@@ -598,7 +619,7 @@ static int on_http(struct lws *wsi, enum lws_callback_reasons reason, void *user
     if (connection == NULL) {
         return 0;
     }
-    lws_channel *ch = channel_of(connection);
+    lws_channel *ch = ubii__lws_channel_of(connection);
     switch (reason) {
     case LWS_CALLBACK_CLIENT_APPEND_HANDSHAKE_HEADER: {
         if (ch == NULL) {
@@ -623,7 +644,7 @@ static int on_http(struct lws *wsi, enum lws_callback_reasons reason, void *user
         }
         if (lws_write(wsi, connection->request + LWS_PRE, connection->request_size,
                       LWS_WRITE_HTTP_FINAL) < 0) {
-            lose(connection, "HTTP request could not be written", NULL);
+            ubii__lws_lose(connection, "HTTP request could not be written", NULL);
             return -1;
         }
         lws_client_http_body_pending(wsi, 0);
@@ -645,8 +666,8 @@ static int on_http(struct lws *wsi, enum lws_callback_reasons reason, void *user
         if (ch == NULL) {
             return -1;
         }
-        if (!append(connection, in, len, connection->port->options.max_message_size)) {
-            lose(connection, "HTTP reply over the size limit", NULL);
+        if (!ubii__lws_append(connection, in, len, connection->port->options.max_message_size)) {
+            ubii__lws_lose(connection, "HTTP reply over the size limit", NULL);
             return -1;
         }
         break;
@@ -658,14 +679,14 @@ static int on_http(struct lws *wsi, enum lws_callback_reasons reason, void *user
             } else {
                 char status[32];
                 snprintf(status, sizeof status, "%d", connection->status);
-                lose(connection, "HTTP service answered with status", status);
+                ubii__lws_lose(connection, "HTTP service answered with status", status);
             }
             ch->connection = NULL;
             detach(connection);
         }
         return -1; /* one request per connection */
     case LWS_CALLBACK_CLIENT_CONNECTION_ERROR:
-        lose(connection, "HTTP connection failed", in != NULL ? (const char *)in : NULL);
+        ubii__lws_lose(connection, "HTTP connection failed", in != NULL ? (const char *)in : NULL);
         break;
     case LWS_CALLBACK_WSI_DESTROY:
         if (ch != NULL && ch->connection == connection) {
@@ -685,20 +706,17 @@ static int on_http(struct lws *wsi, enum lws_callback_reasons reason, void *user
 static ubii_status post_request(ubii_linux_port *port, ubii_channel which, queued_message *body)
 {
     lws_channel *ch = &port->channels[which].lws;
-    lws_connection *connection = calloc(1, sizeof *connection);
+    lws_connection *connection = ubii__lws_new_connection(port, which);
     if (connection == NULL) {
         free(body);
         return UBII_ERR_TRANSPORT;
     }
-    connection->port = port;
-    connection->owner = port;
-    connection->which = which;
     connection->http = true;
-    port->lws_connections++;
     /* The message was allocated with LWS_PRE bytes of headroom; keep that layout. */
     connection->request = malloc(LWS_PRE + body->size);
     if (connection->request == NULL) {
         free(body);
+        port->lws_connections--;
         free(connection);
         return UBII_ERR_TRANSPORT;
     }
@@ -707,19 +725,10 @@ static ubii_status post_request(ubii_linux_port *port, ubii_channel which, queue
     free(body);
 
     struct lws_client_connect_info info;
-    describe_connection(port, ch, connection, ch->path, &info);
+    ubii__lws_describe_connection(port, ch, connection, ch->path, &info);
     info.method = "POST";
     info.local_protocol_name = "ubii-http";
-    ch->connection = connection;
-    connection->wsi = lws_client_connect_via_info(&info);
-    if (connection->wsi == NULL && ch->connection == connection) {
-        ch->connection = NULL;
-        port->lws_connections--;
-        detach(connection);
-        free(connection);
-        port->channels[which].state = UBII_CHANNEL_LOST;
-        set_error(port, "HTTP request could not be started", NULL);
-    }
+    ubii__lws_connect(port, which, connection, &info, "HTTP request could not be started");
     return UBII_OK;
 }
 
@@ -731,24 +740,28 @@ ubii_status ubii__lws_open(ubii_linux_port *port, ubii_channel which, const char
 {
     channel *c = &port->channels[which];
     lws_channel *ch = &c->lws;
-    bool websocket;
+    transport_kind kind;
     memset(ch, 0, sizeof *ch);
-    if (!parse_url(url, ch, &ch->tls, &websocket)) {
+    if (!parse_url(url, ch, &kind)) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
-    if (websocket != (which == UBII_CHANNEL_TOPIC)) {
+    if ((kind == TRANSPORT_HTTP && which == UBII_CHANNEL_TOPIC) ||
+        (kind == TRANSPORT_WEBSOCKET && which == UBII_CHANNEL_SERVICE)) {
         return UBII_ERR_UNSUPPORTED; /* topic data over WebSocket, services over HTTP */
     }
     if (ch->tls && !port->options.enable_tls) {
-        set_error(port, "TLS URL on a port created without enable_tls", url);
+        ubii__lws_set_error(port, "TLS URL on a port created without enable_tls", url);
         return UBII_ERR_UNSUPPORTED;
     }
     if (port->lws == NULL) {
         return port->options.zmq_only ? UBII_ERR_UNSUPPORTED : UBII_ERR_TRANSPORT;
     }
-    c->kind = websocket ? TRANSPORT_WEBSOCKET : TRANSPORT_HTTP;
-    if (websocket) {
+    c->kind = kind;
+    if (kind == TRANSPORT_WEBSOCKET) {
         return connect_websocket(port, which, client_id);
+    }
+    if (kind == TRANSPORT_ZMTP) {
+        return ubii__lws_connect_zmtp(port, which, client_id);
     }
     c->state = UBII_CHANNEL_OPEN; /* each request makes its own connection */
     return UBII_OK;

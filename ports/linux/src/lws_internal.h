@@ -1,0 +1,91 @@
+#ifndef UBII_LWS_INTERNAL_H
+#define UBII_LWS_INTERNAL_H
+
+/* Shared by the Linux port's libwebsockets files: lws_channel.c (the connections, WebSocket and
+ * HTTP) and lws_zmtp.c (ZMTP over an lws raw socket, in the caller's thread). */
+
+#include <libwebsockets.h>
+
+#include "linux_port.h"
+#include "websocket_frame.h"
+#include "zmtp_wire.h"
+
+enum {
+    RX_CHUNK = 64 * 1024,
+    /* Received messages waiting for the node, at most. The node drains the inbox at every poll,
+     * so this is only reached by an application that stops polling under a flood; the connection
+     * is then dropped (LOST, with a reason). Pausing the socket instead (lws_rx_flow_control)
+     * makes libwebsockets 4.1 spin in its forced-service loop on TLS connections. */
+    INBOX_LIMIT_COUNT = 16384,
+    INBOX_LIMIT_BYTES = 256 * 1024 * 1024,
+    OUTBOX_LIMIT_COUNT = 4096,
+    /* Frames handed to libwebsockets in one write: below its per-write limit (RX_CHUNK), so one
+     * send(2) carries them all. */
+    BATCH_BYTES = 32 * 1024,
+    MASK_POOL = 256
+};
+
+/* Outgoing messages keep LWS_PRE bytes before their data: room for a frame header. */
+typedef char headroom_holds_a_websocket_header[LWS_PRE >= UBII_WS_MAX_CLIENT_HEADER ? 1 : -1];
+typedef char headroom_holds_a_zmtp_header[LWS_PRE >= UBII_ZMTP_MAX_HEADER ? 1 : -1];
+
+typedef struct lws_connection {
+    ubii_linux_port *port;  /* NULL once the channel has let go of it */
+    ubii_linux_port *owner; /* the port, always: counts its live connections */
+    ubii_channel which;
+    struct lws *wsi;
+    bool http;
+    /* ZMTP in the caller's thread (tcp:// with UBII_LINUX_ZMQ_IN_THREAD): a REQ or a DEALER, and
+     * how far the master's half of the handshake has come. The greeting and READY to send wait
+     * in `request` until the connection is up; `assembly` gathers the byte stream. */
+    bool zmtp;
+    bool zmtp_request;
+    ubii_zmtp_step zmtp_step;
+    /* WebSocket: the message being assembled from fragments. */
+    uint8_t *assembly;
+    size_t assembled;
+    size_t assembly_capacity;
+    unsigned assembly_flags;
+    /* WebSocket: outgoing frames gathered for one write (LWS_PRE + BATCH_BYTES), and masking
+     * keys fetched from lws's random source MASK_POOL bytes at a time. */
+    uint8_t *batch;
+    uint8_t masks[MASK_POOL];
+    size_t masks_left;
+    /* HTTP: the request body (after LWS_PRE bytes) and the response. */
+    uint8_t *request;
+    size_t request_size;
+    int status;
+} lws_connection;
+
+void ubii__lws_set_error(ubii_linux_port *port, const char *what, const char *detail);
+/* The channel the connection serves, or NULL once the channel has let go of it. */
+lws_channel *ubii__lws_channel_of(lws_connection *connection);
+/* Marks the channel LOST with a reason. */
+void ubii__lws_lose(lws_connection *connection, const char *what, const char *detail);
+/* Appends to the connection's assembly buffer; false over `limit` or without memory. */
+bool ubii__lws_append(lws_connection *connection, const void *in, size_t len, size_t limit);
+/* Queues a copy of a received message for the node. */
+void ubii__lws_deliver(lws_connection *connection, lws_channel *ch, const uint8_t *data,
+                       size_t size, unsigned flags);
+/* Writes what the outbox holds, as much as the socket takes now; -1 to end the connection. */
+int ubii__lws_write_outbox(lws_connection *connection, lws_channel *ch, struct lws *wsi);
+/* A new connection record for a channel, counted as live. */
+lws_connection *ubii__lws_new_connection(ubii_linux_port *port, ubii_channel which);
+/* Starts connecting as `info` says; on failure at once, frees the record and marks the channel
+ * LOST with `failure`. */
+void ubii__lws_connect(ubii_linux_port *port, ubii_channel which, lws_connection *connection,
+                       struct lws_client_connect_info *info, const char *failure);
+/* WSI_DESTROY: reports the end to a channel still open, then frees the record. */
+void ubii__lws_connection_destroyed(lws_connection *connection, struct lws *wsi, const char *what);
+void ubii__lws_describe_connection(ubii_linux_port *port, const lws_channel *ch,
+                                   lws_connection *connection, const char *path,
+                                   struct lws_client_connect_info *info);
+
+/* lws_zmtp.c */
+int ubii__lws_on_zmtp(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+                      size_t len);
+/* Connects the channel (host and port already in it) as a REQ or a DEALER. */
+ubii_status ubii__lws_connect_zmtp(ubii_linux_port *port, ubii_channel which,
+                                   const char *client_id);
+
+#endif

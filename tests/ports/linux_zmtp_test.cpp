@@ -1,0 +1,363 @@
+// The Linux port's in-thread ZMQ engine (UBII_LINUX_ZMQ_IN_THREAD) against a hand-written ZMTP
+// peer on loopback: what goes over the wire, and what the port does with bytes the master would
+// never send. Everything runs in the test's thread: the peer is served between the port's waits.
+#include <gtest/gtest.h>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ubii/port_linux.h"
+
+namespace
+{
+
+using Bytes = std::vector<uint8_t>;
+
+Bytes frame(const std::string &body, bool more)
+{
+    Bytes bytes;
+    if (body.size() > 255) {
+        bytes.push_back(static_cast<uint8_t>(0x02 | (more ? 1 : 0)));
+        for (int shift = 56; shift >= 0; shift -= 8) {
+            bytes.push_back(static_cast<uint8_t>(static_cast<uint64_t>(body.size()) >> shift));
+        }
+    } else {
+        bytes.push_back(more ? 1 : 0);
+        bytes.push_back(static_cast<uint8_t>(body.size()));
+    }
+    bytes.insert(bytes.end(), body.begin(), body.end());
+    return bytes;
+}
+
+// What a ROUTER sends a DEALER: the empty delimiter, then the payload.
+Bytes routed(const std::string &payload)
+{
+    Bytes bytes = frame("", true);
+    Bytes rest = frame(payload, false);
+    bytes.insert(bytes.end(), rest.begin(), rest.end());
+    return bytes;
+}
+
+Bytes peer_handshake(const char *socket_type)
+{
+    Bytes bytes(64, 0);
+    bytes[0] = 0xFF;
+    bytes[9] = 0x7F;
+    bytes[10] = 3;
+    std::memcpy(bytes.data() + 12, "NULL", 4);
+    std::string ready = std::string("\5READY") + "\13Socket-Type" + std::string(3, '\0') +
+                        static_cast<char>(std::strlen(socket_type)) + socket_type;
+    Bytes command = {0x04, static_cast<uint8_t>(ready.size())};
+    command.insert(command.end(), ready.begin(), ready.end());
+    bytes.insert(bytes.end(), command.begin(), command.end());
+    return bytes;
+}
+
+// A loopback listener that accepts one client; the test serves it between the port's waits.
+class Peer
+{
+  public:
+    Peer()
+    {
+        listener_ = socket(AF_INET, SOCK_STREAM, 0);
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        socklen_t length = sizeof address;
+        if (bind(listener_, reinterpret_cast<sockaddr *>(&address), sizeof address) != 0 ||
+            listen(listener_, 1) != 0 ||
+            getsockname(listener_, reinterpret_cast<sockaddr *>(&address), &length) != 0) {
+            ADD_FAILURE() << "cannot listen on loopback";
+        }
+        port_ = ntohs(address.sin_port);
+    }
+    ~Peer()
+    {
+        if (client_ >= 0) {
+            close(client_);
+        }
+        close(listener_);
+    }
+    std::string url() const
+    {
+        return "tcp://127.0.0.1:" + std::to_string(port_);
+    }
+
+    // Accepts if a client is waiting, and reads what it has sent.
+    void serve()
+    {
+        pollfd fd{client_ >= 0 ? client_ : listener_, POLLIN, 0};
+        if (poll(&fd, 1, 0) <= 0) {
+            return;
+        }
+        if (client_ < 0) {
+            client_ = accept(listener_, nullptr, nullptr);
+            return;
+        }
+        uint8_t buffer[65536];
+        ssize_t got = recv(client_, buffer, sizeof buffer, MSG_DONTWAIT);
+        if (got > 0) {
+            received.insert(received.end(), buffer, buffer + got);
+        }
+    }
+    bool connected() const
+    {
+        return client_ >= 0;
+    }
+    void drop_client()
+    {
+        close(client_);
+        client_ = -1;
+    }
+    void send_bytes(const Bytes &bytes)
+    {
+        ASSERT_EQ(send(client_, bytes.data(), bytes.size(), 0), static_cast<ssize_t>(bytes.size()));
+    }
+
+    Bytes received;
+
+  private:
+    int listener_ = -1;
+    int client_ = -1;
+    uint16_t port_ = 0;
+};
+
+class InThreadZmtp : public ::testing::Test
+{
+  protected:
+    void SetUp() override
+    {
+        ubii_linux_port_options options{};
+        options.libwebsockets_log_level = 1;
+        options.zmq_engine = UBII_LINUX_ZMQ_IN_THREAD;
+        options.max_message_size = 1024;
+        ASSERT_EQ(ubii_linux_port_create(&linux_port_, &options), UBII_OK);
+        port_ = ubii_linux_port_get(linux_port_);
+    }
+    void TearDown() override
+    {
+        ubii_linux_port_destroy(linux_port_);
+    }
+
+    ubii_channel_state state(ubii_channel channel)
+    {
+        return port_.vtable->state(port_.context, channel);
+    }
+    // Waits and serves the peer until `done`, at most two seconds.
+    bool pump_until(const std::function<bool()> &done)
+    {
+        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+        while (!done()) {
+            if (std::chrono::steady_clock::now() > deadline) {
+                return false;
+            }
+            port_.vtable->wait(port_.context, 5);
+            peer_.serve();
+        }
+        return true;
+    }
+    void open_topic()
+    {
+        ASSERT_EQ(
+            port_.vtable->open(port_.context, UBII_CHANNEL_TOPIC, peer_.url().c_str(), "client-7"),
+            UBII_OK);
+        ASSERT_TRUE(pump_until([&] { return peer_.connected() && peer_.received.size() >= 64; }));
+        peer_.send_bytes(peer_handshake("ROUTER"));
+        ASSERT_TRUE(pump_until([&] { return state(UBII_CHANNEL_TOPIC) == UBII_CHANNEL_OPEN; }));
+    }
+    std::vector<std::string> take_all(ubii_channel channel)
+    {
+        std::vector<std::string> messages;
+        const uint8_t *data;
+        size_t size;
+        unsigned flags;
+        while (port_.vtable->receive(port_.context, channel, &data, &size, &flags) == UBII_OK) {
+            messages.emplace_back(reinterpret_cast<const char *>(data), size);
+        }
+        return messages;
+    }
+    void send_message(ubii_channel channel, const std::string &payload)
+    {
+        uint8_t *buffer = nullptr;
+        ASSERT_EQ(port_.vtable->send_begin(port_.context, channel, payload.size(), &buffer),
+                  UBII_OK);
+        std::memcpy(buffer, payload.data(), payload.size());
+        ASSERT_EQ(port_.vtable->send_commit(port_.context, channel, 0), UBII_OK);
+    }
+
+    ubii_linux_port *linux_port_ = nullptr;
+    ubii_port port_{};
+    Peer peer_;
+};
+
+TEST_F(InThreadZmtp, DealerAnnouncesItsIdentityAndExchangesMessagesWithoutDelimiters)
+{
+    open_topic();
+    std::string said(peer_.received.begin() + 64, peer_.received.end());
+    EXPECT_NE(said.find("Socket-Type"), std::string::npos);
+    EXPECT_NE(said.find("DEALER"), std::string::npos);
+    EXPECT_NE(said.find(std::string("Identity") + std::string(3, '\0') + "\10client-7"),
+              std::string::npos);
+
+    // Three messages in one write, one of them long-framed, come out whole and in order.
+    Bytes burst = routed("first");
+    for (const std::string &payload : {std::string(300, 'x'), std::string("third")}) {
+        Bytes more = routed(payload);
+        burst.insert(burst.end(), more.begin(), more.end());
+    }
+    peer_.send_bytes(burst);
+    std::vector<std::string> got;
+    ASSERT_TRUE(pump_until([&] {
+        for (std::string &message : take_all(UBII_CHANNEL_TOPIC)) {
+            got.push_back(message);
+        }
+        return got.size() >= 3;
+    }));
+    EXPECT_EQ(got, (std::vector<std::string>{"first", std::string(300, 'x'), "third"}));
+
+    // What the DEALER sends is one frame per message: the master reads no delimiter there.
+    size_t handshake = peer_.received.size();
+    send_message(UBII_CHANNEL_TOPIC, "up");
+    send_message(UBII_CHANNEL_TOPIC, std::string(256, 'y'));
+    Bytes expected = frame("up", false);
+    Bytes long_one = frame(std::string(256, 'y'), false);
+    expected.insert(expected.end(), long_one.begin(), long_one.end());
+    ASSERT_TRUE(pump_until([&] { return peer_.received.size() >= handshake + expected.size(); }));
+    EXPECT_EQ(Bytes(peer_.received.begin() + static_cast<long>(handshake), peer_.received.end()),
+              expected);
+}
+
+TEST_F(InThreadZmtp, RequestCarriesTheEmptyDelimiterAndTheReplyLosesIt)
+{
+    ASSERT_EQ(port_.vtable->open(port_.context, UBII_CHANNEL_SERVICE, peer_.url().c_str(), ""),
+              UBII_OK);
+    send_message(UBII_CHANNEL_SERVICE, "request"); // waits for the master's READY
+    ASSERT_TRUE(pump_until([&] { return peer_.connected() && peer_.received.size() >= 64; }));
+    peer_.send_bytes(peer_handshake("REP"));
+    Bytes expected = frame("", true);
+    Bytes body = frame("request", false);
+    expected.insert(expected.end(), body.begin(), body.end());
+    ASSERT_TRUE(pump_until([&] {
+        std::string text(peer_.received.begin(), peer_.received.end());
+        return text.find("request") != std::string::npos;
+    }));
+    std::string said(peer_.received.begin() + 64, peer_.received.end());
+    EXPECT_NE(said.find("REQ"), std::string::npos);
+    EXPECT_EQ(said.find("Identity"), std::string::npos);
+    EXPECT_EQ(
+        Bytes(peer_.received.end() - static_cast<long>(expected.size()), peer_.received.end()),
+        expected);
+
+    peer_.send_bytes(routed("reply"));
+    std::vector<std::string> got;
+    ASSERT_TRUE(pump_until([&] {
+        got = take_all(UBII_CHANNEL_SERVICE);
+        return !got.empty();
+    }));
+    EXPECT_EQ(got, std::vector<std::string>{"reply"});
+}
+
+TEST_F(InThreadZmtp, MessageOfAnotherShapeIsDroppedAndTheNextOneDelivered)
+{
+    open_topic();
+    Bytes bytes = frame("", true);
+    for (const char *part : {"a", "b"}) {
+        Bytes more = frame(part, true);
+        bytes.insert(bytes.end(), more.begin(), more.end());
+    }
+    Bytes last = frame("c", false);
+    bytes.insert(bytes.end(), last.begin(), last.end());
+    Bytes good = routed("good");
+    bytes.insert(bytes.end(), good.begin(), good.end());
+    peer_.send_bytes(bytes);
+    std::vector<std::string> got;
+    ASSERT_TRUE(pump_until([&] {
+        got = take_all(UBII_CHANNEL_TOPIC);
+        return !got.empty();
+    }));
+    EXPECT_EQ(got, std::vector<std::string>{"good"});
+    EXPECT_EQ(state(UBII_CHANNEL_TOPIC), UBII_CHANNEL_OPEN);
+    EXPECT_NE(std::string(ubii_linux_port_last_error(linux_port_)).find("dropped"),
+              std::string::npos);
+}
+
+TEST_F(InThreadZmtp, FrameOverTheLimitLosesTheConnectionWithAReason)
+{
+    open_topic();
+    Bytes bytes = frame("", true);
+    Bytes header = {0x02, 0, 0, 0, 0, 0, 0, 0x10, 0}; // LONG, 4096 bytes: over max_message_size
+    bytes.insert(bytes.end(), header.begin(), header.end());
+    peer_.send_bytes(bytes); // the header alone is enough to refuse it
+    ASSERT_TRUE(pump_until([&] { return state(UBII_CHANNEL_TOPIC) == UBII_CHANNEL_LOST; }));
+    EXPECT_NE(std::string(ubii_linux_port_last_error(linux_port_)).find("size limit"),
+              std::string::npos);
+    EXPECT_TRUE(take_all(UBII_CHANNEL_TOPIC).empty());
+}
+
+TEST_F(InThreadZmtp, PeerThatIsNotZmtpIsRefusedWithAReason)
+{
+    ASSERT_EQ(port_.vtable->open(port_.context, UBII_CHANNEL_TOPIC, peer_.url().c_str(), "id"),
+              UBII_OK);
+    ASSERT_TRUE(pump_until([&] { return peer_.connected(); }));
+    std::string http =
+        "HTTP/1.1 400 Bad Request\r\nContent-Length: 0\r\n\r\n" + std::string(40, ' ');
+    peer_.send_bytes(Bytes(http.begin(), http.end()));
+    ASSERT_TRUE(pump_until([&] { return state(UBII_CHANNEL_TOPIC) == UBII_CHANNEL_LOST; }));
+    EXPECT_NE(std::string(ubii_linux_port_last_error(linux_port_)).find("ZMTP 3"),
+              std::string::npos);
+}
+
+TEST_F(InThreadZmtp, ConnectionRefusedAndClosedByThePeerAreLost)
+{
+    ASSERT_EQ(port_.vtable->open(port_.context, UBII_CHANNEL_TOPIC, "tcp://127.0.0.1:1", "id"),
+              UBII_OK);
+    EXPECT_TRUE(pump_until([&] { return state(UBII_CHANNEL_TOPIC) == UBII_CHANNEL_LOST; }));
+
+    open_topic();
+    peer_.drop_client(); // the master goes away
+    EXPECT_TRUE(pump_until([&] { return state(UBII_CHANNEL_TOPIC) == UBII_CHANNEL_LOST; }));
+}
+
+TEST(InThreadZmtpOptions, RefusedWithZmqOnlyAndUnknownEngines)
+{
+    ubii_linux_port *port = nullptr;
+    ubii_linux_port_options options{};
+    options.zmq_engine = UBII_LINUX_ZMQ_IN_THREAD;
+    options.zmq_only = true; // the engine needs libwebsockets
+    EXPECT_EQ(ubii_linux_port_create(&port, &options), UBII_ERR_INVALID_ARGUMENT);
+    options.zmq_only = false;
+    const int unknown_engine = 7; // as a C caller may pass; C++ cannot name it
+    static_assert(sizeof options.zmq_engine == sizeof unknown_engine, "an int-sized enum");
+    std::memcpy(&options.zmq_engine, &unknown_engine, sizeof unknown_engine);
+    EXPECT_EQ(ubii_linux_port_create(&port, &options), UBII_ERR_INVALID_ARGUMENT);
+}
+
+TEST(InThreadZmtpOptions, TcpUrlsNeedHostAndPortOnly)
+{
+    ubii_linux_port *linux_port = nullptr;
+    ubii_linux_port_options options{};
+    options.libwebsockets_log_level = 1;
+    options.zmq_engine = UBII_LINUX_ZMQ_IN_THREAD;
+    ASSERT_EQ(ubii_linux_port_create(&linux_port, &options), UBII_OK);
+    ubii_port port = ubii_linux_port_get(linux_port);
+    for (const char *url : {"tcp://127.0.0.1", "tcp://127.0.0.1:8103/path", "tcp://:8103"}) {
+        EXPECT_EQ(port.vtable->open(port.context, UBII_CHANNEL_TOPIC, url, "id"),
+                  UBII_ERR_INVALID_ARGUMENT)
+            << url;
+    }
+    EXPECT_EQ(port.vtable->open(port.context, UBII_CHANNEL_TOPIC, "tcp://127.0.0.1:8103", ""),
+              UBII_ERR_INVALID_ARGUMENT)
+        << "a DEALER needs the client id";
+    ubii_linux_port_destroy(linux_port);
+}
+
+} // namespace
