@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Pub/sub benchmark: libubii over ZMQ and over WebSocket, on the Linux port (libzmq,
-# libwebsockets) and on the embedded port (its own ZMTP and WebSocket code), beside the official
-# Node.js node, all against the same local master in one run, with ratios. Prints a table; asserts
-# nothing.
+# Pub/sub benchmark: libubii over ZMQ and over WebSocket, on the Linux port (libzmq or its
+# in-thread ZMTP engine, libwebsockets) and on the embedded port (its own ZMTP and WebSocket code),
+# beside the official Node.js node, all against the same local master in one run, with ratios.
+# Prints a table; asserts nothing.
 #   bench/run.sh [ROUNDS [MESSAGES [WINDOW]]]    defaults 2000 20000 100
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -31,6 +31,7 @@ exec "$root/scripts/private-net.sh" bash -c '
   {
     run "libubii-zmq" "\"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 $rounds $messages $window"
     run "libubii-websocket" "\"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 ws://127.0.0.1:8104 $rounds $messages $window"
+    run "libubii-zmq-in-thread" "UBII_BENCH_ZMQ_ENGINE=in-thread \"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 $rounds $messages $window"
     run "embedded-zmtp" "\"$embedded_build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 $rounds $messages $window"
     run "embedded-websocket" "\"$embedded_build/bench/pubsub_bench\" tcp://127.0.0.1:8101 ws://127.0.0.1:8104 $rounds $messages $window"
     # The same clients polled once per 60 Hz frame, as a game engine pumps them (the Node.js
@@ -38,6 +39,7 @@ exec "$root/scripts/private-net.sh" bash -c '
     frame=16667 frame_window=$((window * 10))
     run "libubii-zmq@60Hz" "\"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 10 $messages $frame_window $frame"
     run "libubii-websocket@60Hz" "\"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 ws://127.0.0.1:8104 10 $messages $frame_window $frame"
+    run "libubii-zmq-in-thread@60Hz" "UBII_BENCH_ZMQ_ENGINE=in-thread \"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 10 $messages $frame_window $frame"
     run "embedded-zmtp@60Hz" "\"$embedded_build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 10 $messages $frame_window $frame"
     run "embedded-websocket@60Hz" "\"$embedded_build/bench/pubsub_bench\" tcp://127.0.0.1:8101 ws://127.0.0.1:8104 10 $messages $frame_window $frame"
     run "nodejs-zmq" "node \"$root/bench/nodejs_bench.js\" \"$client\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 $rounds $messages $window | sed -n \"s/^RESULT //p\""
@@ -49,21 +51,23 @@ exec "$root/scripts/private-net.sh" bash -c '
       if (!c || !n || v[c, \"cpu_us_per_message\"] <= 0) return
       # getrusage counts in clock ticks: a client that barely runs may show 0 user time.
       user = v[c, \"user_us_per_message\"] > 0 ? sprintf(\"%.1fx\", v[n, \"user_us_per_message\"] / v[c, \"user_us_per_message\"]) : \"n/a, 0 measured\"
-      printf \"  %-24s vs %-16s cpu/msg %.1fx (user %s)   rtt p50 %.2fx   rtt p99 %.2fx   throughput %.2fx\n\", mine, theirs,
+      printf \"  %-27s vs %-16s cpu/msg %.1fx (user %s)   rtt p50 %.2fx   rtt p99 %.2fx   throughput %.2fx\n\", mine, theirs,
         v[n, \"cpu_us_per_message\"] / v[c, \"cpu_us_per_message\"], user,
         v[n, \"rtt_p50_us\"] / v[c, \"rtt_p50_us\"], v[n, \"rtt_p99_us\"] / v[c, \"rtt_p99_us\"],
         v[c, \"messages_per_s\"] / v[n, \"messages_per_s\"]
     }
     END {
       printf \"pub/sub through one local npm 0.4.0 master: %d round trips, %d messages (window %d)\n\", rounds, messages, window
-      printf \"%-24s %10s %10s %10s %10s %10s %10s %10s\n\", \"client\", \"rtt p50 us\", \"rtt p99 us\", \"msgs/s\", \"cpu us/msg\", \"user us\", \"kernel us\", \"switch/msg\"
+      printf \"%-27s %10s %10s %10s %10s %10s %10s %10s\n\", \"client\", \"rtt p50 us\", \"rtt p99 us\", \"msgs/s\", \"cpu us/msg\", \"user us\", \"kernel us\", \"switch/msg\"
       for (r = 1; r <= NR; r++)
-        printf \"%-24s %10s %10s %10s %10s %10s %10s %10s\n\", name[r], v[r, \"rtt_p50_us\"], v[r, \"rtt_p99_us\"], v[r, \"messages_per_s\"], v[r, \"cpu_us_per_message\"], v[r, \"user_us_per_message\"], v[r, \"system_us_per_message\"], v[r, \"switches_per_message\"]
+        printf \"%-27s %10s %10s %10s %10s %10s %10s %10s\n\", name[r], v[r, \"rtt_p50_us\"], v[r, \"rtt_p99_us\"], v[r, \"messages_per_s\"], v[r, \"cpu_us_per_message\"], v[r, \"user_us_per_message\"], v[r, \"system_us_per_message\"], v[r, \"switches_per_message\"]
       printf \"ratios, Node.js / libubii on the same transport (higher is better for libubii; throughput libubii / Node.js):\n\"
-      ratio(\"libubii-zmq\", \"nodejs-zmq\"); ratio(\"libubii-websocket\", \"nodejs-websocket\")
+      ratio(\"libubii-zmq\", \"nodejs-zmq\"); ratio(\"libubii-zmq-in-thread\", \"nodejs-zmq\")
+      ratio(\"libubii-websocket\", \"nodejs-websocket\")
       ratio(\"embedded-zmtp\", \"nodejs-zmq\"); ratio(\"embedded-websocket\", \"nodejs-websocket\")
       printf \"polled once per 60 Hz frame, window %d (latency columns of these rows are meaningless: they measure 10 round trips only):\n\", window * 10
-      ratio(\"libubii-zmq@60Hz\", \"nodejs-zmq\"); ratio(\"libubii-websocket@60Hz\", \"nodejs-websocket\")
+      ratio(\"libubii-zmq@60Hz\", \"nodejs-zmq\"); ratio(\"libubii-zmq-in-thread@60Hz\", \"nodejs-zmq\")
+      ratio(\"libubii-websocket@60Hz\", \"nodejs-websocket\")
       ratio(\"embedded-zmtp@60Hz\", \"nodejs-zmq\"); ratio(\"embedded-websocket@60Hz\", \"nodejs-websocket\")
       printf \"kernel time is loopback TCP to and from the master and thread wake-ups (switch/msg: context switches per message)\n\"
     }"
