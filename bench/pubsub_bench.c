@@ -57,6 +57,25 @@ static void on_record(ubii_node *node, const ubii_record *record, void *user)
     received++;
 }
 
+/* Trouble is reported, never hidden: a run that went wrong says how on stderr. */
+static void on_state(ubii_node *node, ubii_state previous, ubii_state current, ubii_status reason,
+                     void *user)
+{
+    (void)node;
+    (void)user;
+    if (current == UBII_STATE_RECONNECTING || current == UBII_STATE_FAILED) {
+        fprintf(stderr, "pubsub_bench: state %d -> %d: %s\n", (int)previous, (int)current,
+                ubii_strerror(reason));
+    }
+}
+
+static void on_error(ubii_node *node, ubii_status status, const char *detail, void *user)
+{
+    (void)node;
+    (void)user;
+    fprintf(stderr, "pubsub_bench: %s: %s\n", ubii_strerror(status), detail);
+}
+
 static int compare(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
@@ -127,6 +146,8 @@ int main(int argc, char **argv)
     config.topic_url = argv[2];
     config.client_name = "libubii-bench";
     config.stamp_records = false; /* as the Node.js side, which stamps nothing either */
+    config.on_state = on_state;
+    config.on_error = on_error;
     static ubii_node node;
     ubii_node_init(&node, sizeof node, &config, port_handle);
     ubii_subscribe(&node, topic, on_record, NULL, NULL);
@@ -141,7 +162,15 @@ int main(int argc, char **argv)
         ubii_node_poll(&node, 10);
     }
     if (received == 0) {
-        fprintf(stderr, "pubsub_bench: no echo from the master\n");
+        ubii_stats stats;
+        ubii_node_stats(&node, &stats);
+        fprintf(stderr,
+                "pubsub_bench: no echo from the master (state %d, published %llu, received %llu, "
+                "service timeouts %llu, reconnects %llu, master errors %llu)\n",
+                (int)ubii_node_state(&node), (unsigned long long)stats.records_published,
+                (unsigned long long)stats.records_received,
+                (unsigned long long)stats.service_timeouts, (unsigned long long)stats.reconnects,
+                (unsigned long long)stats.master_errors);
         return 1;
     }
     poll_until(&node, received + 1000000, 0.2);
@@ -195,7 +224,10 @@ int main(int argc, char **argv)
            system * 1e6 / (double)messages,
            (double)(switches_end - switches_start) / (double)messages);
     free(rtt);
-    ubii_node_stop_wait(&node, 2000);
+    /* A node the master still believes in would be sent the next run's messages. */
+    if (ubii_node_stop_wait(&node, 2000) != UBII_OK) {
+        fprintf(stderr, "pubsub_bench: the node did not deregister cleanly\n");
+    }
 #ifdef UBII_BENCH_EMBEDDED
     ubii_embedded_port_close(port);
 #else

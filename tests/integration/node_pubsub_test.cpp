@@ -111,6 +111,26 @@ TEST_P(NodeFrameTick, HundredsOfMessagesPerFrameGoOutAndComeBack)
         << "after " << frame << " frames";
 }
 
+// A loop that publishes once per ubii_node_poll(node, 50) is paced by the poll: writing what was
+// published is not the event the wait is for. (The Linux port's WebSocket and in-thread ZMQ used
+// to return at once after the write, so such a loop spun and flooded the master.)
+TEST_P(NodeFrameTick, PollWithATimeoutWaitsAlthoughEachRoundPublishes)
+{
+    TestNode node("poll-pacing-test", GetParam());
+    ASSERT_TRUE(node.wait_ready());
+    const std::string topic = unique_topic("/nobody-listens"); // no copies come back
+    constexpr auto span = std::chrono::milliseconds(500);
+    const auto end = std::chrono::steady_clock::now() + span;
+    int rounds = 0;
+    while (std::chrono::steady_clock::now() < end) {
+        ASSERT_EQ(ubii_publish_double(node.get(), topic.c_str(), rounds), UBII_OK);
+        ASSERT_EQ(ubii_node_poll(node.get(), 50), UBII_OK);
+        ++rounds;
+    }
+    // About 10 rounds of 50 ms; a poll that returns after the write makes thousands.
+    EXPECT_LE(rounds, 50) << "published " << rounds << " times in " << span.count() << " ms";
+}
+
 INSTANTIATE_TEST_SUITE_P(Transports, NodeFrameTick,
                          ::testing::Values(ubii_test::topic_zmq_url(), ubii_test::topic_ws_url()),
                          [](const ::testing::TestParamInfo<std::string> &transport) {

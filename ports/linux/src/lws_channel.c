@@ -1,13 +1,15 @@
 /* WebSocket topic data (ws://, wss://) and binary HTTP services (http://, https://) through
- * libwebsockets.
+ * libwebsockets, and the connections, queues and frame writing they share with the in-thread ZMQ
+ * engine (lws_zmtp.c).
  *
  * Debian's libwebsockets is built without external-poll support, so lws drives the waiting: it
  * alone knows when its sockets need POLLOUT (e.g. during a non-blocking connect). ZMQ's fds are
  * adopted into it (as dup'd raw descriptors) so that ZMQ traffic wakes it as well, and a
  * scheduled timer bounds every wait.
  *
- * Each WebSocket or HTTP connection has a record that outlives the channel if need be: closing a
- * channel detaches the record and asks lws to kill the connection; lws frees it on WSI_DESTROY. */
+ * Each WebSocket, HTTP or ZMTP connection has a record that outlives the channel if need be:
+ * closing a channel detaches the record and asks lws to kill the connection; lws frees it on
+ * WSI_DESTROY. */
 #define _POSIX_C_SOURCE 200809L /* dup */
 
 #include <stdio.h>
@@ -170,7 +172,7 @@ static bool parse_url(const char *url, lws_channel *ch, transport_kind *kind)
     return true;
 }
 
-/* ---- the lws context ----------------------------------------------------------------------------
+/* ---- outgoing frames (WebSocket and ZMTP) ------------------------------------------------------
  */
 
 static const uint8_t *next_mask(lws_connection *connection, struct lws *wsi)
@@ -315,6 +317,9 @@ void ubii__lws_connection_destroyed(lws_connection *connection, struct lws *wsi,
     free(connection);
     lws_set_opaque_user_data(wsi, NULL);
 }
+
+/* ---- the lws context ----------------------------------------------------------------------------
+ */
 
 static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
                         size_t len);
@@ -826,10 +831,7 @@ ubii_status ubii__lws_send_commit(ubii_linux_port *port, ubii_channel which, uns
         }
         return post_request(port, which, message);
     }
-    push(&ch->outbox, message);
-    if (ch->connection != NULL && ch->connection->wsi != NULL && c->state == UBII_CHANNEL_OPEN) {
-        lws_callback_on_writable(ch->connection->wsi);
-    }
+    push(&ch->outbox, message); /* written at the next wait (flush_outboxes) */
     return UBII_OK;
 }
 
@@ -857,9 +859,27 @@ static void wake_up(lws_sorted_usec_list_t *timer)
  * already due when it looks is run first and then no longer bounds the sleep. So a zero wait uses
  * lws's non-blocking form (-1), and a positive wait gets a second, later timer as a safety net in
  * case the first one falls due before lws polls. */
+/* Writes what was queued since the last wait, before waiting. Left to lws's writable callback,
+ * the write would be the event that ends the wait: a loop that publishes once per
+ * ubii_node_poll(node, 16) would spin instead of being paced. Only a socket that takes less than
+ * everything asks lws to say when it is writable again. */
+static void flush_outboxes(ubii_linux_port *port)
+{
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        channel *c = &port->channels[i];
+        lws_connection *connection = c->lws.connection;
+        if ((c->kind == TRANSPORT_WEBSOCKET || c->kind == TRANSPORT_ZMTP) &&
+            c->state == UBII_CHANNEL_OPEN && c->lws.outbox.count > 0 && connection != NULL &&
+            connection->wsi != NULL) {
+            ubii__lws_write_outbox(connection, &c->lws, connection->wsi);
+        }
+    }
+}
+
 void ubii__lws_service(ubii_linux_port *port, int timeout_ms)
 {
     enum { SAFETY_MARGIN_MS = 20 };
+    flush_outboxes(port);
     if (timeout_ms <= 0) {
         lws_service(port->lws, -1);
         return;
