@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include "loopback.h"
+
 extern "C" {
 #include "embedded_internal.h"
 }
@@ -389,17 +391,10 @@ class ZmtpRepPeer
   public:
     explicit ZmtpRepPeer(std::string extra) : extra_(std::move(extra))
     {
-        listener_ = socket(AF_INET, SOCK_STREAM, 0);
-        sockaddr_in address{};
-        address.sin_family = AF_INET;
-        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        socklen_t length = sizeof address;
-        if (bind(listener_, reinterpret_cast<sockaddr *>(&address), sizeof address) != 0 ||
-            listen(listener_, 1) != 0 ||
-            getsockname(listener_, reinterpret_cast<sockaddr *>(&address), &length) != 0) {
+        listener_ = ubii_test::listen_on_loopback(port_);
+        if (listener_ < 0) {
             ADD_FAILURE() << "no listening socket";
         }
-        port_ = ntohs(address.sin_port);
         thread_ = std::thread([this] { serve(); });
     }
     ~ZmtpRepPeer()

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "loopback.h"
 #include "ubii/port_linux.h"
 
 namespace
@@ -68,17 +69,10 @@ class Peer
   public:
     Peer()
     {
-        listener_ = socket(AF_INET, SOCK_STREAM, 0);
-        sockaddr_in address{};
-        address.sin_family = AF_INET;
-        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        socklen_t length = sizeof address;
-        if (bind(listener_, reinterpret_cast<sockaddr *>(&address), sizeof address) != 0 ||
-            listen(listener_, 1) != 0 ||
-            getsockname(listener_, reinterpret_cast<sockaddr *>(&address), &length) != 0) {
+        listener_ = ubii_test::listen_on_loopback(port_);
+        if (listener_ < 0) {
             ADD_FAILURE() << "cannot listen on loopback";
         }
-        port_ = ntohs(address.sin_port);
     }
     ~Peer()
     {
