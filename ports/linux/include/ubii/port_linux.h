@@ -35,7 +35,7 @@ typedef enum ubii_linux_zmq_engine {
     UBII_LINUX_ZMQ_LIBZMQ = 0,
     /* ZMTP 3 written by libubii over a libwebsockets raw socket, in the thread that polls the
      * node: no extra thread, and a node polled once per frame takes the frame's messages in a few
-     * reads and sends its own in one write (bench/run.sh: about 5x less CPU per message than
+     * reads and sends its own in one write (bench/run.sh: about 6x less CPU per message than
      * libzmq when polled at 60 Hz). The master sees the same REQ and DEALER peers. */
     UBII_LINUX_ZMQ_IN_THREAD = 1
 } ubii_linux_zmq_engine;
