@@ -4,6 +4,7 @@
 // The port the tests run on: the build's UBII_PORT (Linux or embedded), behind one small class so
 // that one integration suite serves both.
 
+#include <cstddef>
 #include <memory>
 
 #include "ubii/port.h"
@@ -25,6 +26,8 @@ class TestPort
     ubii_port get();
     const char *last_error() const;
     static bool supports_tls();
+    // Largest message the port takes or accepts (its buffers on the embedded port).
+    static size_t max_message_size();
 
   private:
     struct Impl;

@@ -33,4 +33,9 @@ bool TestPort::supports_tls()
     return false;
 }
 
+size_t TestPort::max_message_size()
+{
+    return UBII_EMBEDDED_MAX_MESSAGE;
+}
+
 } // namespace ubii_test

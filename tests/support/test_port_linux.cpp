@@ -48,4 +48,9 @@ bool TestPort::supports_tls()
     return true;
 }
 
+size_t TestPort::max_message_size()
+{
+    return 16u * 1024u * 1024u; // the default of ubii_linux_port_options.max_message_size
+}
+
 } // namespace ubii_test

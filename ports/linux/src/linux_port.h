@@ -84,7 +84,8 @@ struct ubii_linux_port {
     struct lws_context *lws; /* created on the first WebSocket or HTTP channel */
     struct lws_vhost *vhost;
     zmq_wakeup *wakeups[MAX_ZMQ_WAKEUPS];
-    int lws_connections; /* live WebSocket/HTTP connections, closing ones included */
+    int lws_connections;   /* live WebSocket/HTTP connections, closing ones included */
+    size_t lws_bytes_read; /* handed over by libwebsockets in the current service pass */
     char last_error[256];
 };
 

@@ -105,6 +105,8 @@ static void detach(lws_connection *connection)
     connection->assembly = NULL;
     free(connection->batch);
     connection->batch = NULL;
+    free(connection->sending);
+    connection->sending = NULL;
     free(connection->request);
     connection->request = NULL;
     connection->port = NULL;
@@ -213,14 +215,31 @@ static uint8_t *frame_in_place(lws_connection *connection, struct lws *wsi, uint
     return header;
 }
 
+/* Writes the next piece of the frame in `sending`, at most RX_CHUNK bytes: lws sends a larger write
+ * only in part and keeps the rest, to send one piece per service pass. */
+static const char *write_piece(lws_connection *connection, struct lws *wsi)
+{
+    size_t piece = connection->sending_left < RX_CHUNK ? connection->sending_left : RX_CHUNK;
+    if (lws_write(wsi, connection->sending_next, piece, LWS_WRITE_RAW) < 0) {
+        return "write to the master failed";
+    }
+    connection->sending_next += piece;
+    connection->sending_left -= piece;
+    if (connection->sending_left == 0) {
+        free(connection->sending);
+        connection->sending = NULL;
+    }
+    return NULL;
+}
+
 /* Writes the outbox's first messages as whole frames in one lws_write: as many as fit
- * BATCH_BYTES, or one larger message framed in its own headroom. (libwebsockets would frame each
- * WebSocket message with a write, and a read of its random source, of its own.) The frames go as
- * raw bytes; lws keeps whatever the socket does not take and sends it before anything else. */
+ * BATCH_BYTES; or starts one larger message, framed in its own headroom, that goes in pieces.
+ * (libwebsockets would frame each WebSocket message with a write, and a read of its random
+ * source, of its own.) The frames go as raw bytes; lws keeps whatever the socket does not take
+ * and sends it before anything else. */
 static const char *write_frames(lws_connection *connection, lws_channel *ch, struct lws *wsi)
 {
     static const char no_mask[] = "no random bytes for WebSocket masking keys";
-    static const char write_failed[] = "write to the master failed";
     queued_message *message = ch->outbox.head;
     size_t framed = framing_size(connection, message->size) + message->size;
     uint8_t *start;
@@ -228,9 +247,14 @@ static const char *write_frames(lws_connection *connection, lws_channel *ch, str
     if (framed > BATCH_BYTES) {
         pop(&ch->outbox);
         start = frame_in_place(connection, wsi, message->data, message->size, message->flags);
-        int written = start != NULL ? lws_write(wsi, start, framed, LWS_WRITE_RAW) : 0;
-        free(message);
-        return start == NULL ? no_mask : written < 0 ? write_failed : NULL;
+        if (start == NULL) {
+            free(message);
+            return no_mask;
+        }
+        connection->sending = message;
+        connection->sending_next = start;
+        connection->sending_left = framed;
+        return write_piece(connection, wsi);
     }
     if (connection->batch == NULL && (connection->batch = malloc(LWS_PRE + BATCH_BYTES)) == NULL) {
         return "out of memory for outgoing frames";
@@ -251,24 +275,30 @@ static const char *write_frames(lws_connection *connection, lws_channel *ch, str
         }
         length += framed;
     }
-    return lws_write(wsi, start, length, LWS_WRITE_RAW) < 0 ? write_failed : NULL;
+    return lws_write(wsi, start, length, LWS_WRITE_RAW) < 0 ? "write to the master failed" : NULL;
+}
+
+static bool output_waits(const lws_connection *connection, const lws_channel *ch)
+{
+    return connection->sending != NULL || ch->outbox.count > 0;
 }
 
 int ubii__lws_write_outbox(lws_connection *connection, lws_channel *ch, struct lws *wsi)
 {
     /* As much as the socket takes now: one message per callback would cap a node polled once per
      * frame at one message per frame. */
-    while (ch->outbox.count > 0) {
-        const char *failure = write_frames(connection, ch, wsi);
+    while (output_waits(connection, ch)) {
+        const char *failure = connection->sending != NULL ? write_piece(connection, wsi)
+                                                          : write_frames(connection, ch, wsi);
         if (failure != NULL) {
             ubii__lws_lose(connection, failure, NULL);
             return -1;
         }
-        if (ch->outbox.count == 0 || lws_send_pipe_choked(wsi)) {
+        if (!output_waits(connection, ch) || lws_send_pipe_choked(wsi)) {
             break;
         }
     }
-    if (ch->outbox.count > 0) {
+    if (output_waits(connection, ch)) {
         lws_callback_on_writable(wsi);
     }
     return 0;
@@ -351,6 +381,8 @@ bool ubii__lws_start(ubii_linux_port *port)
     info.options = port->options.enable_tls ? LWS_SERVER_OPTION_DO_SSL_GLOBAL_INIT : 0;
     info.gid = -1;
     info.uid = -1;
+    /* lws reads a socket into this buffer, once per service pass (4 KB by default). */
+    info.pt_serv_buf_size = LWS_PRE + RX_CHUNK;
     info.user = port;
     port->lws = lws_create_context(&info);
     if (port->lws == NULL) {
@@ -486,6 +518,7 @@ bool ubii__lws_append(lws_connection *connection, const void *in, size_t len, si
     }
     memcpy(connection->assembly + connection->assembled, in, len);
     connection->assembled += len;
+    connection->owner->lws_bytes_read += len;
     return true;
 }
 
@@ -855,10 +888,15 @@ static void wake_up(lws_sorted_usec_list_t *timer)
     (void)timer; /* lws_service returns once it has run */
 }
 
-/* lws_service() ignores its timeout argument and sleeps until the next scheduled timer; a timer
- * already due when it looks is run first and then no longer bounds the sleep. So a zero wait uses
- * lws's non-blocking form (-1), and a positive wait gets a second, later timer as a safety net in
- * case the first one falls due before lws polls. */
+/* The connection of an open WebSocket or ZMTP channel, which writes its outbox itself. */
+static lws_connection *writer_of(channel *c)
+{
+    lws_connection *connection = c->lws.connection;
+    bool writes = (c->kind == TRANSPORT_WEBSOCKET || c->kind == TRANSPORT_ZMTP) &&
+                  c->state == UBII_CHANNEL_OPEN && connection != NULL && connection->wsi != NULL;
+    return writes ? connection : NULL;
+}
+
 /* Writes what was queued since the last wait, before waiting. Left to lws's writable callback,
  * the write would be the event that ends the wait: a loop that publishes once per
  * ubii_node_poll(node, 16) would spin instead of being paced. Only a socket that takes less than
@@ -866,20 +904,20 @@ static void wake_up(lws_sorted_usec_list_t *timer)
 static void flush_outboxes(ubii_linux_port *port)
 {
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
-        channel *c = &port->channels[i];
-        lws_connection *connection = c->lws.connection;
-        if ((c->kind == TRANSPORT_WEBSOCKET || c->kind == TRANSPORT_ZMTP) &&
-            c->state == UBII_CHANNEL_OPEN && c->lws.outbox.count > 0 && connection != NULL &&
-            connection->wsi != NULL) {
-            ubii__lws_write_outbox(connection, &c->lws, connection->wsi);
+        lws_connection *connection = writer_of(&port->channels[i]);
+        if (connection != NULL && output_waits(connection, &port->channels[i].lws)) {
+            ubii__lws_write_outbox(connection, &port->channels[i].lws, connection->wsi);
         }
     }
 }
 
-void ubii__lws_service(ubii_linux_port *port, int timeout_ms)
+/* lws_service() ignores its timeout argument and sleeps until the next scheduled timer; a timer
+ * already due when it looks is run first and then no longer bounds the sleep. So a zero wait uses
+ * lws's non-blocking form (-1), and a positive wait gets a second, later timer as a safety net in
+ * case the first one falls due before lws polls. */
+static void service_once(ubii_linux_port *port, int timeout_ms)
 {
     enum { SAFETY_MARGIN_MS = 20 };
-    flush_outboxes(port);
     if (timeout_ms <= 0) {
         lws_service(port->lws, -1);
         return;
@@ -893,6 +931,37 @@ void ubii__lws_service(ubii_linux_port *port, int timeout_ms)
     lws_service(port->lws, 0);
     lws_sul_cancel(&timer);
     lws_sul_cancel(&safety);
+}
+
+/* A connection holding output its socket has room for now. */
+static bool output_can_go_on(ubii_linux_port *port)
+{
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        lws_connection *connection = writer_of(&port->channels[i]);
+        if (connection != NULL &&
+            (output_waits(connection, &port->channels[i].lws) ||
+             lws_partial_buffered(connection->wsi)) &&
+            !lws_send_pipe_choked(connection->wsi)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+void ubii__lws_service(ubii_linux_port *port, int timeout_ms)
+{
+    /* A pass reads each socket once (RX_CHUNK at most) and lws sends what one write left over
+     * once, so a node polled once per frame would move 64 KB per frame each way (a megabyte image
+     * in 15 frames). Passes go on without waiting while they read a near-full buffer or have
+     * output the socket takes, up to SERVICE_PASSES (4 MB each way per wait). */
+    for (int pass = 0; pass < SERVICE_PASSES; ++pass) {
+        flush_outboxes(port);
+        port->lws_bytes_read = 0;
+        service_once(port, pass == 0 ? timeout_ms : 0);
+        if (port->lws_bytes_read < RX_CHUNK / 2 && !output_can_go_on(port)) {
+            break;
+        }
+    }
 }
 
 int ubii__lws_fds(ubii_linux_port *port, ubii_pollfd *fds, int capacity)

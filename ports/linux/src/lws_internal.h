@@ -22,6 +22,8 @@ enum {
     /* Frames handed to libwebsockets in one write: below its per-write limit (RX_CHUNK), so one
      * send(2) carries them all. */
     BATCH_BYTES = 32 * 1024,
+    /* lws_service passes in one wait, at most (ubii__lws_service). */
+    SERVICE_PASSES = 64,
     MASK_POOL = 256
 };
 
@@ -49,6 +51,10 @@ typedef struct lws_connection {
     /* WebSocket: outgoing frames gathered for one write (LWS_PRE + BATCH_BYTES), and masking
      * keys fetched from lws's random source MASK_POOL bytes at a time. */
     uint8_t *batch;
+    /* A message larger than BATCH_BYTES, framed in place, while it goes out in pieces. */
+    queued_message *sending;
+    uint8_t *sending_next;
+    size_t sending_left;
     uint8_t masks[MASK_POOL];
     size_t masks_left;
     /* HTTP: the request body (after LWS_PRE bytes) and the response. */
