@@ -168,6 +168,8 @@ static ubii_status begin_connecting(ubii_node *node)
     return UBII_OK;
 }
 
+static void tear_down(ubii_node *node);
+
 ubii_status ubii_node_start(ubii_node *node)
 {
     if (node == NULL || node->struct_size != sizeof(ubii_node)) {
@@ -175,6 +177,9 @@ ubii_status ubii_node_start(ubii_node *node)
     }
     if (node->state != UBII_STATE_STOPPED && node->state != UBII_STATE_FAILED) {
         return UBII_ERR_STATE;
+    }
+    if (node->leaving) {
+        tear_down(node); /* a failed connection's deregistration is abandoned */
     }
     node->reconnect_attempts = 0;
     node->stop_requested = false;
@@ -199,6 +204,41 @@ static void tear_down(ubii_node *node)
     close_channels(node);
     ubii__subscriptions_reset_master(node);
     node->client_id[0] = '\0';
+    node->leaving = false;
+}
+
+static ubii_status enqueue_deregistration(ubii_node *node)
+{
+    ubii_services_ServiceRequest request;
+    memset(&request, 0, sizeof request);
+    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_CLIENT_DEREGISTRATION);
+    request.which_type = ubii_services_ServiceRequest_client_tag;
+    ubii__copy_string(request.type.client.id, sizeof request.type.client.id, node->client_id);
+    ubii__copy_string(request.type.client.name, sizeof request.type.client.name, node->client_name);
+    return ubii__enqueue(node, &request, 0, UBII__CALL_DEREGISTRATION, NULL, NULL);
+}
+
+/* Ends the current connection like tear_down, except that a node the master registered, whose
+ * service channel still works (only its topic data connection failed), deregisters first: every
+ * retry registers anew, and the master would otherwise keep one stale client per attempt. The
+ * service channel closes when the deregistration is answered or fails (deregistration_done). */
+static void leave(ubii_node *node)
+{
+    void *port = node->port.context;
+    bool registered = node->client_id[0] != '\0';
+    if (!registered || node->port.vtable->state(port, UBII_CHANNEL_SERVICE) != UBII_CHANNEL_OPEN) {
+        tear_down(node);
+        return;
+    }
+    ubii__cancel_calls(node, UBII_ERR_CANCELLED);
+    node->port.vtable->close(port, UBII_CHANNEL_TOPIC);
+    ubii__subscriptions_reset_master(node);
+    if (enqueue_deregistration(node) != UBII_OK) {
+        tear_down(node);
+        return;
+    }
+    node->client_id[0] = '\0';
+    node->leaving = true;
 }
 
 static void finish_stop(ubii_node *node)
@@ -211,8 +251,20 @@ static void finish_stop(ubii_node *node)
 /* Gives up for good. */
 static void fail(ubii_node *node, ubii_status reason)
 {
-    tear_down(node);
+    leave(node);
     ubii__set_state(node, UBII_STATE_FAILED, reason);
+}
+
+/* The deregistration of a stop or of a failed connection was answered, failed or cancelled. */
+static void deregistration_done(ubii_node *node)
+{
+    bool was_leaving = node->leaving;
+    node->leaving = false;
+    if (node->state == UBII_STATE_STOPPING) {
+        finish_stop(node);
+    } else if (was_leaving) {
+        close_channels(node);
+    }
 }
 
 void ubii__connection_lost(ubii_node *node, ubii_status reason)
@@ -228,7 +280,7 @@ void ubii__connection_lost(ubii_node *node, ubii_status reason)
         fail(node, reason);
         return;
     }
-    tear_down(node);
+    leave(node);
     node->retry_at_ms = ubii__now(node) + backoff_ms(node);
     ubii__set_state(node, UBII_STATE_RECONNECTING, reason);
 }
@@ -340,9 +392,7 @@ void ubii__on_step_reply(ubii_node *node, uint8_t purpose, const ubii_reply *rep
         if (reply->status != UBII_OK && reply->status != UBII_ERR_CANCELLED) {
             ubii__report(node, reply->status, "deregistration failed");
         }
-        if (node->state == UBII_STATE_STOPPING) {
-            finish_stop(node);
-        }
+        deregistration_done(node);
         break;
     default:
         break;
@@ -355,19 +405,17 @@ static void begin_stopping(ubii_node *node)
     if (node->state == UBII_STATE_STOPPED || node->state == UBII_STATE_STOPPING) {
         return;
     }
+    if (node->leaving) {
+        ubii__set_state(node, UBII_STATE_STOPPING, UBII_OK); /* its deregistration is under way */
+        return;
+    }
     bool registered = node->state == UBII_STATE_OPENING || node->state == UBII_STATE_READY;
     if (!registered) {
         finish_stop(node);
         return;
     }
     ubii__cancel_calls(node, UBII_ERR_CANCELLED);
-    ubii_services_ServiceRequest request;
-    memset(&request, 0, sizeof request);
-    ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_CLIENT_DEREGISTRATION);
-    request.which_type = ubii_services_ServiceRequest_client_tag;
-    ubii__copy_string(request.type.client.id, sizeof request.type.client.id, node->client_id);
-    ubii__copy_string(request.type.client.name, sizeof request.type.client.name, node->client_name);
-    if (ubii__enqueue(node, &request, 0, UBII__CALL_DEREGISTRATION, NULL, NULL) != UBII_OK) {
+    if (enqueue_deregistration(node) != UBII_OK) {
         finish_stop(node);
         return;
     }
@@ -471,13 +519,21 @@ static void step(ubii_node *node)
     check_channels(node, now);
     receive_topic_data(node);
     ubii__service_step(node);
+    if (node->leaving) {
+        /* A lost service channel never answers: the deregistration is given up. */
+        ubii_channel_state service =
+            node->port.vtable->state(node->port.context, UBII_CHANNEL_SERVICE);
+        if (service == UBII_CHANNEL_LOST || service == UBII_CHANNEL_CLOSED) {
+            deregistration_done(node);
+        }
+    }
     now = ubii__now(node);
     if (node->state == UBII_STATE_READY && node->ping_seen && node->config.ping_timeout_ms != 0 &&
         now - node->last_ping_ms > node->config.ping_timeout_ms) {
         ubii__report(node, UBII_ERR_TIMEOUT, "no PING from the master");
         ubii__connection_lost(node, UBII_ERR_TIMEOUT);
     }
-    if (node->state == UBII_STATE_RECONNECTING && now >= node->retry_at_ms) {
+    if (node->state == UBII_STATE_RECONNECTING && !node->leaving && now >= node->retry_at_ms) {
         ubii_status status = begin_connecting(node);
         if (status != UBII_OK) {
             ubii__connection_lost(node, status);
@@ -505,7 +561,7 @@ int ubii_node_next_timeout_ms(ubii_node *node)
     if (node->call_sent && node->call_deadline_ms < deadline) {
         deadline = node->call_deadline_ms;
     }
-    if (node->state == UBII_STATE_RECONNECTING && node->retry_at_ms < deadline) {
+    if (node->state == UBII_STATE_RECONNECTING && !node->leaving && node->retry_at_ms < deadline) {
         deadline = node->retry_at_ms;
     }
     if (node->state == UBII_STATE_OPENING && node->open_deadline_ms < deadline) {

@@ -1,5 +1,6 @@
 // The node's protocol logic against a scripted in-process master (FakePort) with simulated time:
 // sequence, keepalive, subscriptions, duplicates, bad input, timeouts, reconnection, stop.
+#include <algorithm>
 #include <cstring>
 #include <random>
 
@@ -357,6 +358,122 @@ TEST_F(NodeWithFakeMaster, ATopicConnectionThatNeverOpensTimesOut)
     advance(2);
     EXPECT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);
     EXPECT_EQ(reasons.back(), UBII_ERR_TIMEOUT);
+}
+
+// Each retry registers anew: a node that lost only its topic data connection tells the master to
+// forget its old registration first, over the service channel that still works.
+std::vector<std::string> request_topics(const FakePort &fake, size_t from = 0)
+{
+    std::vector<std::string> topics;
+    for (size_t i = from; i < fake.requests.size(); ++i) {
+        topics.emplace_back(fake.requests[i].topic);
+    }
+    return topics;
+}
+
+TEST_F(NodeWithFakeMaster, ALostTopicConnectionIsDeregisteredBeforeTheRetry)
+{
+    start_ready();
+    const size_t before = fake.requests.size();
+    const int service_opens = fake.opens[UBII_CHANNEL_SERVICE];
+    fake.set_state(UBII_CHANNEL_TOPIC, UBII_CHANNEL_LOST);
+    poll(2);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);
+    EXPECT_EQ(reasons.back(), UBII_ERR_TRANSPORT);
+    ASSERT_EQ(request_topics(fake, before),
+              std::vector<std::string>{UBII_SERVICE_CLIENT_DEREGISTRATION});
+    EXPECT_STREQ(fake.requests.back().type.client.id, client_id.c_str());
+    EXPECT_EQ(fake.state(UBII_CHANNEL_SERVICE), UBII_CHANNEL_CLOSED); // closed once answered
+    advance(100);
+    poll(5);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+    EXPECT_EQ(fake.opens[UBII_CHANNEL_SERVICE], service_opens + 1);
+    std::vector<std::string> expected = {UBII_SERVICE_CLIENT_DEREGISTRATION,
+                                         UBII_SERVICE_SERVER_CONFIGURATION,
+                                         UBII_SERVICE_CLIENT_REGISTRATION};
+    std::vector<std::string> sent = request_topics(fake, before);
+    sent.resize(std::min(sent.size(), expected.size()));
+    EXPECT_EQ(sent, expected);
+    EXPECT_TRUE(errors.empty()) << errors.front().second;
+}
+
+TEST_F(NodeWithFakeMaster, AMasterThatIsGoneIsNotAskedToDeregister)
+{
+    start_ready();
+    const size_t before = fake.requests.size();
+    fake.set_state(UBII_CHANNEL_TOPIC, UBII_CHANNEL_LOST);
+    fake.set_state(UBII_CHANNEL_SERVICE, UBII_CHANNEL_LOST);
+    poll(2);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);
+    EXPECT_EQ(fake.requests.size(), before);
+    advance(100);
+    poll(5);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+}
+
+TEST_F(NodeWithFakeMaster, AnUnansweredDeregistrationHoldsTheRetryForTheServiceTimeoutOnly)
+{
+    start_ready();
+    auto answer = fake.answer;
+    fake.answer = [answer](const ubii_services_ServiceRequest &request) {
+        return std::string(request.topic) == UBII_SERVICE_CLIENT_DEREGISTRATION ? std::nullopt
+                                                                                : answer(request);
+    };
+    const size_t before = fake.requests.size();
+    fake.set_state(UBII_CHANNEL_TOPIC, UBII_CHANNEL_LOST);
+    poll(1);
+    ASSERT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);
+    EXPECT_EQ(ubii_node_next_timeout_ms(&node), 1000); // the call's deadline, not the backoff's
+    advance(999);
+    EXPECT_EQ(fake.requests.size(), before + 1); // backoff over, deregistration still pending
+    advance(1);
+    poll(5);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(errors.back().first, UBII_ERR_TIMEOUT);
+}
+
+TEST_F(NodeWithFakeMaster, ANodeThatGivesUpDeregistersEveryAttempt)
+{
+    fake.topic_opens = false;
+    config.max_reconnect_attempts = 1;
+    init();
+    ASSERT_EQ(ubii_node_start(&node), UBII_OK);
+    poll(3);
+    ASSERT_EQ(ubii_node_state(&node), UBII_STATE_OPENING);
+    advance(1001); // the topic connection did not open in time
+    poll(2);
+    advance(100); // backoff
+    poll(3);
+    advance(1001); // nor the second time
+    poll(2);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_FAILED);
+    const std::vector<std::string> sent = request_topics(fake);
+    EXPECT_EQ(std::count(sent.begin(), sent.end(), UBII_SERVICE_CLIENT_REGISTRATION), 2);
+    EXPECT_EQ(std::count(sent.begin(), sent.end(), UBII_SERVICE_CLIENT_DEREGISTRATION), 2);
+    EXPECT_EQ(sent.back(), UBII_SERVICE_CLIENT_DEREGISTRATION);
+    EXPECT_EQ(fake.state(UBII_CHANNEL_SERVICE), UBII_CHANNEL_CLOSED);
+}
+
+TEST_F(NodeWithFakeMaster, StopDuringADeregistrationAfterALossWaitsForIt)
+{
+    start_ready();
+    auto answer = fake.answer;
+    fake.answer = [answer](const ubii_services_ServiceRequest &request) {
+        return std::string(request.topic) == UBII_SERVICE_CLIENT_DEREGISTRATION ? std::nullopt
+                                                                                : answer(request);
+    };
+    fake.set_state(UBII_CHANNEL_TOPIC, UBII_CHANNEL_LOST);
+    poll(1);
+    ASSERT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);
+    const size_t before = fake.requests.size();
+    ASSERT_EQ(ubii_node_stop(&node), UBII_OK);
+    poll(1);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_STOPPING);
+    EXPECT_EQ(fake.requests.size(), before); // the same deregistration, not a second one
+    advance(1000);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_STOPPED);
+    EXPECT_EQ(fake.state(UBII_CHANNEL_SERVICE), UBII_CHANNEL_CLOSED);
 }
 
 TEST_F(NodeWithFakeMaster, StopCancelsPendingCallsDeregistersAndCloses)

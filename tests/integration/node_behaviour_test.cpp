@@ -223,6 +223,33 @@ TEST(Services, SubscribingForAnUnknownClientIdIsABrokerError)
         << catcher.title << ": " << catcher.message;
 }
 
+// Every retry registers anew. A node whose topic data connection fails while the master still
+// answers its services deregisters before it retries or gives up, so the master keeps no client
+// per attempt: subscribing for any of those ids is then an unknown-client error.
+TEST(Services, ANodeWhoseTopicConnectionFailsLeavesNoRegistrationBehind)
+{
+    TestNode witness("registration-witness");
+    ASSERT_TRUE(witness.wait_ready());
+    TestNode node("failed-topic-test", "tcp://127.0.0.1:9"); // nothing listens there
+    node.config().service_timeout_ms = 500;                  // how long OPENING may take
+    ASSERT_TRUE(node.start_and_wait_failed(1));
+    ASSERT_EQ(node.registered_ids().size(), 2u);
+    poll_for(node, 1000); // the last deregistration, bounded by the service timeout
+    for (const std::string &id : node.registered_ids()) {
+        ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+        std::strcpy(request.topic, UBII_SERVICE_TOPIC_SUBSCRIPTION);
+        request.which_type = ubii_services_ServiceRequest_topic_subscription_tag;
+        std::strcpy(request.type.topic_subscription.client_id, id.c_str());
+        ReplyCatcher catcher;
+        ASSERT_EQ(ubii_call(witness.get(), &request, 0, ReplyCatcher::on_reply, &catcher), UBII_OK);
+        ASSERT_TRUE(witness.poll_until([&] { return catcher.done; }));
+        EXPECT_EQ(catcher.status, UBII_ERR_BROKER) << id << " is still registered";
+    }
+    for (const auto &error : node.errors()) {
+        EXPECT_NE(error.second, "deregistration failed") << ubii_strerror(error.first);
+    }
+}
+
 struct DeviceCatcher {
     bool done = false;
     ubii_status status = UBII_OK;

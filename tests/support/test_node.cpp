@@ -128,9 +128,13 @@ void TestNode::on_error(ubii_node *, ubii_status status, const char *detail, voi
     static_cast<TestNode *>(user)->errors_.emplace_back(status, detail);
 }
 
-void TestNode::on_state(ubii_node *, ubii_state, ubii_state current, ubii_status, void *user)
+void TestNode::on_state(ubii_node *node, ubii_state, ubii_state current, ubii_status, void *user)
 {
-    static_cast<TestNode *>(user)->states_.push_back(current);
+    auto *self = static_cast<TestNode *>(user);
+    self->states_.push_back(current);
+    if (current == UBII_STATE_OPENING) {
+        self->registered_ids_.emplace_back(ubii_node_client_id(node));
+    }
 }
 
 } // namespace ubii_test

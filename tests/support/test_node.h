@@ -78,6 +78,11 @@ class TestNode
     {
         return states_;
     }
+    // The client id the master gave each registration (read when the node reached OPENING).
+    std::vector<std::string> &registered_ids()
+    {
+        return registered_ids_;
+    }
 
   private:
     static void on_record(ubii_node *, const ubii_record *record, void *user);
@@ -92,6 +97,7 @@ class TestNode
     std::vector<Received> received_;
     std::vector<std::pair<ubii_status, std::string>> errors_;
     std::vector<ubii_state> states_;
+    std::vector<std::string> registered_ids_;
 };
 
 } // namespace ubii_test

@@ -51,6 +51,8 @@ struct ubii_node {
     uint32_t deferred_state_count;
     bool in_poll;
     bool stop_requested;
+    /* Deregistering after the topic data connection failed, before a retry (or FAILED). */
+    bool leaving;
     uint32_t reconnect_attempts;
     uint64_t retry_at_ms;
     uint64_t stop_deadline_ms;
