@@ -40,9 +40,8 @@ typedef enum ubii_state {
     UBII_STATE_REGISTERING = 2,  /* registering this client */
     UBII_STATE_OPENING = 3,      /* registered; opening the topic connection */
     UBII_STATE_READY = 4,        /* registered and connected: topics and services work */
-    /* the connection failed; waiting to start over (backoff). A node the master still answers
-     * (only its topic connection failed) first deregisters, so retries leave no stale client. */
-    UBII_STATE_RECONNECTING = 5,
+    UBII_STATE_RECONNECTING = 5, /* connection failed; deregistering if the master still
+                                    answers, then waiting to start over (backoff) */
     UBII_STATE_STOPPING = 6,     /* deregistering and closing */
     UBII_STATE_FAILED = 7        /* gave up (see ubii_config.max_reconnect_attempts) */
 } ubii_state;
