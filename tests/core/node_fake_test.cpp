@@ -74,6 +74,16 @@ class NodeWithFakeMaster : public ::testing::Test
         ASSERT_EQ(ubii_node_state(&node), UBII_STATE_READY);
     }
 
+    void leave_deregistrations_unanswered()
+    {
+        auto answer = fake.answer;
+        fake.answer = [answer](const ubii_services_ServiceRequest &request) {
+            return std::string(request.topic) == UBII_SERVICE_CLIENT_DEREGISTRATION
+                       ? std::nullopt
+                       : answer(request);
+        };
+    }
+
     void poll(int times, int timeout_ms = 0)
     {
         for (int i = 0; i < times; ++i) {
@@ -414,11 +424,7 @@ TEST_F(NodeWithFakeMaster, AMasterThatIsGoneIsNotAskedToDeregister)
 TEST_F(NodeWithFakeMaster, AnUnansweredDeregistrationHoldsTheRetryForTheServiceTimeoutOnly)
 {
     start_ready();
-    auto answer = fake.answer;
-    fake.answer = [answer](const ubii_services_ServiceRequest &request) {
-        return std::string(request.topic) == UBII_SERVICE_CLIENT_DEREGISTRATION ? std::nullopt
-                                                                                : answer(request);
-    };
+    leave_deregistrations_unanswered();
     const size_t before = fake.requests.size();
     fake.set_state(UBII_CHANNEL_TOPIC, UBII_CHANNEL_LOST);
     poll(1);
@@ -458,11 +464,7 @@ TEST_F(NodeWithFakeMaster, ANodeThatGivesUpDeregistersEveryAttempt)
 TEST_F(NodeWithFakeMaster, StopDuringADeregistrationAfterALossWaitsForIt)
 {
     start_ready();
-    auto answer = fake.answer;
-    fake.answer = [answer](const ubii_services_ServiceRequest &request) {
-        return std::string(request.topic) == UBII_SERVICE_CLIENT_DEREGISTRATION ? std::nullopt
-                                                                                : answer(request);
-    };
+    leave_deregistrations_unanswered();
     fake.set_state(UBII_CHANNEL_TOPIC, UBII_CHANNEL_LOST);
     poll(1);
     ASSERT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);

@@ -87,6 +87,20 @@ namespace
 // out and come back within a few frames, not one message per poll.
 class NodeFrameTick : public ::testing::TestWithParam<std::string>
 {
+  protected:
+    // Subscribes `node` to `topic` and waits until the master serves the subscription; returns
+    // with nothing received.
+    static bool subscribe_and_warm_up(TestNode &node, const std::string &topic)
+    {
+        node.collect(topic);
+        bool served = node.poll_until([&] {
+            ubii_publish_double(node.get(), topic.c_str(), -1.0);
+            return !node.received().empty();
+        });
+        node.poll_until([] { return false; }, std::chrono::milliseconds(100)); // late copies
+        node.received().clear();
+        return served;
+    }
 };
 
 TEST_P(NodeFrameTick, HundredsOfMessagesPerFrameGoOutAndComeBack)
@@ -94,13 +108,7 @@ TEST_P(NodeFrameTick, HundredsOfMessagesPerFrameGoOutAndComeBack)
     TestNode node("frame-tick-test", GetParam());
     ASSERT_TRUE(node.wait_ready());
     const std::string topic = unique_topic("/frame-tick");
-    node.collect(topic);
-    ASSERT_TRUE(node.poll_until([&] {
-        ubii_publish_double(node.get(), topic.c_str(), -1.0);
-        return !node.received().empty();
-    }));
-    node.poll_until([] { return false; }, std::chrono::milliseconds(100)); // late warm-up copies
-    node.received().clear();
+    ASSERT_TRUE(subscribe_and_warm_up(node, topic));
 
     constexpr int messages = 300;
     for (int i = 0; i < messages; ++i) {
@@ -124,13 +132,7 @@ TEST_P(NodeFrameTick, MegabyteImagesKeepUpWithTheFrameRate)
     TestNode node("frame-image-test", GetParam());
     ASSERT_TRUE(node.wait_ready());
     const std::string topic = unique_topic("/frame-image");
-    node.collect(topic);
-    ASSERT_TRUE(node.poll_until([&] {
-        ubii_publish_double(node.get(), topic.c_str(), -1.0);
-        return !node.received().empty();
-    }));
-    node.poll_until([] { return false; }, std::chrono::milliseconds(100)); // late warm-up copies
-    node.received().clear();
+    ASSERT_TRUE(subscribe_and_warm_up(node, topic));
 
     constexpr size_t width = 640;
     constexpr size_t room_for_framing = 512;
