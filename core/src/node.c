@@ -207,8 +207,14 @@ static void tear_down(ubii_node *node)
     node->leaving = false;
 }
 
+/* Queues the release of the node's subscriptions, then its deregistration. A release that does
+ * not fit the queue is reported and left out: the deregistration matters more. */
 static ubii_status enqueue_deregistration(ubii_node *node)
 {
+    ubii_status released = ubii__subscriptions_enqueue_release(node);
+    if (released != UBII_OK) {
+        ubii__report(node, released, "subscriptions could not be released before deregistering");
+    }
     ubii_services_ServiceRequest request;
     memset(&request, 0, sizeof request);
     ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_CLIENT_DEREGISTRATION);
@@ -232,11 +238,11 @@ static void leave(ubii_node *node)
     }
     ubii__cancel_calls(node, UBII_ERR_CANCELLED);
     node->port.vtable->close(port, UBII_CHANNEL_TOPIC);
-    ubii__subscriptions_reset_master(node);
     if (enqueue_deregistration(node) != UBII_OK) {
         tear_down(node);
         return;
     }
+    ubii__subscriptions_reset_master(node);
     node->client_id[0] = '\0';
     node->leaving = true;
 }
@@ -255,7 +261,8 @@ static void fail(ubii_node *node, ubii_status reason)
     ubii__set_state(node, UBII_STATE_FAILED, reason);
 }
 
-/* The deregistration of a stop or of a failed connection was answered, failed or cancelled. */
+/* The deregistration of a stop or of a failed connection was answered, failed or given up.
+ * Whatever of it is still queued goes too: the next connection starts with an empty queue. */
 static void deregistration_done(ubii_node *node)
 {
     bool was_leaving = node->leaving;
@@ -263,6 +270,7 @@ static void deregistration_done(ubii_node *node)
     if (node->state == UBII_STATE_STOPPING) {
         finish_stop(node);
     } else if (was_leaving) {
+        ubii__cancel_calls(node, UBII_ERR_CANCELLED);
         close_channels(node);
     }
 }
@@ -387,6 +395,17 @@ void ubii__on_step_reply(ubii_node *node, uint8_t purpose, const ubii_reply *rep
         break;
     case UBII__CALL_SUBSCRIPTION:
         ubii__subscriptions_on_reply(node, reply);
+        break;
+    case UBII__CALL_RELEASE:
+        if (reply->status != UBII_OK && reply->status != UBII_ERR_CANCELLED) {
+            ubii__report(node, reply->status, "releasing the subscriptions failed");
+        }
+        if (reply->status == UBII_ERR_TIMEOUT &&
+            (node->leaving || node->state == UBII_STATE_STOPPING)) {
+            /* A master that does not answer will not answer the deregistration either: leaving
+             * stays bounded by one service timeout. */
+            deregistration_done(node);
+        }
         break;
     case UBII__CALL_DEREGISTRATION:
         if (reply->status != UBII_OK && reply->status != UBII_ERR_CANCELLED) {

@@ -17,6 +17,7 @@ enum ubii__purpose {
     UBII__CALL_SERVER_CONFIGURATION,
     UBII__CALL_REGISTRATION,
     UBII__CALL_SUBSCRIPTION,
+    UBII__CALL_RELEASE, /* every subscription dropped before deregistering */
     UBII__CALL_DEREGISTRATION
 };
 
@@ -45,6 +46,9 @@ void ubii__parse_reply(const uint8_t *bytes, size_t size, ubii_reply *reply,
 void ubii__subscriptions_reset_master(ubii_node *node);
 void ubii__subscriptions_sync(ubii_node *node);
 void ubii__subscriptions_on_reply(ubii_node *node, const ubii_reply *reply);
+/* Queues the request that drops every subscription the master holds (or was asked for) for this
+ * node; UBII_OK without a request when it holds none. */
+ubii_status ubii__subscriptions_enqueue_release(ubii_node *node);
 void ubii__dispatch_record(ubii_node *node, const ubii_record *record, const uint8_t *message,
                            size_t size);
 

@@ -145,15 +145,26 @@ typedef struct list_selection {
     ubii_node *node;
     uint8_t kind;
     bool subscribing;
+    bool releasing; /* every pattern the master holds, for the unsubscribe lists */
 } list_selection;
+
+static bool selected(const list_selection *selection, const ubii__subscription *slot)
+{
+    if (slot->kind != selection->kind) {
+        return false;
+    }
+    if (selection->releasing) {
+        return slot->at_master && !selection->subscribing;
+    }
+    return slot->in_flight && (bool)slot->active == selection->subscribing;
+}
 
 static bool encode_selected(pb_ostream_t *stream, const pb_field_t *field, void *const *arg)
 {
     const list_selection *selection = *arg;
     for (size_t i = 0; i < UBII_MAX_SUBSCRIPTIONS; ++i) {
         const ubii__subscription *slot = &selection->node->subscriptions[i];
-        if (slot->in_flight && slot->kind == selection->kind &&
-            (bool)slot->active == selection->subscribing) {
+        if (selected(selection, slot)) {
             if (!pb_encode_tag_for_field(stream, field) ||
                 !pb_encode_string(stream, (const pb_byte_t *)slot->pattern,
                                   strlen(slot->pattern))) {
@@ -185,19 +196,14 @@ static bool select_changes(ubii_node *node)
     return any;
 }
 
-void ubii__subscriptions_sync(ubii_node *node)
+/* Queues a TopicSubscription request whose four lists are chosen by `releasing`: the marked
+ * changes, or the release of everything the master holds. */
+static ubii_status enqueue_subscription_request(ubii_node *node, bool releasing, uint8_t purpose)
 {
-    if (!node->subscriptions_dirty || node->subscription_call_pending) {
-        return;
-    }
-    node->subscriptions_dirty = false;
-    if (!select_changes(node)) {
-        return;
-    }
-    list_selection lists[4] = {{node, UBII__EXACT, true},
-                               {node, UBII__EXACT, false},
-                               {node, UBII__REGEX, true},
-                               {node, UBII__REGEX, false}};
+    list_selection lists[4] = {{node, UBII__EXACT, true, releasing},
+                               {node, UBII__EXACT, false, releasing},
+                               {node, UBII__REGEX, true, releasing},
+                               {node, UBII__REGEX, false, releasing}};
     ubii_services_ServiceRequest request;
     memset(&request, 0, sizeof request);
     ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_TOPIC_SUBSCRIPTION);
@@ -211,7 +217,32 @@ void ubii__subscriptions_sync(ubii_node *node)
         fields[i]->funcs.encode = encode_selected;
         fields[i]->arg = &lists[i];
     }
-    ubii_status status = ubii__enqueue(node, &request, 0, UBII__CALL_SUBSCRIPTION, NULL, NULL);
+    return ubii__enqueue(node, &request, 0, purpose, NULL, NULL);
+}
+
+/* Neither master releases a client's subscriptions when it deregisters (PROTOCOL.md 2.8): it
+ * would go on forwarding their data to the old id, and the npm 0.4.0 master gets slower with
+ * every client that left that way. */
+ubii_status ubii__subscriptions_enqueue_release(ubii_node *node)
+{
+    for (size_t i = 0; i < UBII_MAX_SUBSCRIPTIONS; ++i) {
+        if (node->subscriptions[i].kind != UBII__FREE && node->subscriptions[i].at_master) {
+            return enqueue_subscription_request(node, true, UBII__CALL_RELEASE);
+        }
+    }
+    return UBII_OK;
+}
+
+void ubii__subscriptions_sync(ubii_node *node)
+{
+    if (!node->subscriptions_dirty || node->subscription_call_pending) {
+        return;
+    }
+    node->subscriptions_dirty = false;
+    if (!select_changes(node)) {
+        return;
+    }
+    ubii_status status = enqueue_subscription_request(node, false, UBII__CALL_SUBSCRIPTION);
     if (status != UBII_OK) {
         /* Undo the marks; a full queue is retried at the next step. */
         for (size_t i = 0; i < UBII_MAX_SUBSCRIPTIONS; ++i) {

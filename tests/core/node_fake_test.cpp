@@ -478,6 +478,69 @@ TEST_F(NodeWithFakeMaster, StopDuringADeregistrationAfterALossWaitsForIt)
     EXPECT_EQ(fake.state(UBII_CHANNEL_SERVICE), UBII_CHANNEL_CLOSED);
 }
 
+// Neither master drops a client's subscriptions when it deregisters (PROTOCOL.md 2.8): the node
+// releases them itself first.
+TEST_F(NodeWithFakeMaster, StopReleasesEverySubscriptionBeforeDeregistering)
+{
+    start_ready();
+    Counter counter;
+    ASSERT_EQ(ubii_subscribe(&node, "/a", Counter::on_record, &counter, nullptr), UBII_OK);
+    ASSERT_EQ(ubii_subscribe(&node, "/a", Counter::on_record, &counter, nullptr), UBII_OK);
+    ASSERT_EQ(ubii_subscribe_regex(&node, "^/b", Counter::on_record, &counter, nullptr), UBII_OK);
+    poll(3);
+    const size_t before = fake.requests.size();
+    ASSERT_EQ(ubii_node_stop(&node), UBII_OK);
+    poll(3);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_STOPPED);
+    EXPECT_EQ(request_topics(fake, before),
+              (std::vector<std::string>{UBII_SERVICE_TOPIC_SUBSCRIPTION,
+                                        UBII_SERVICE_CLIENT_DEREGISTRATION}));
+    EXPECT_STREQ(fake.requests[before].type.topic_subscription.client_id, client_id.c_str());
+    EXPECT_EQ(fake.unsubscribe_topics, std::vector<std::string>{"/a"});
+    EXPECT_EQ(fake.unsubscribe_regexes, std::vector<std::string>{"^/b"});
+    EXPECT_TRUE(errors.empty()) << errors.front().second;
+}
+
+TEST_F(NodeWithFakeMaster, ALostTopicConnectionReleasesSubscriptionsBeforeDeregistering)
+{
+    start_ready();
+    Counter counter;
+    ASSERT_EQ(ubii_subscribe(&node, "/a", Counter::on_record, &counter, nullptr), UBII_OK);
+    poll(3);
+    const size_t before = fake.requests.size();
+    fake.set_state(UBII_CHANNEL_TOPIC, UBII_CHANNEL_LOST);
+    poll(3);
+    EXPECT_EQ(request_topics(fake, before),
+              (std::vector<std::string>{UBII_SERVICE_TOPIC_SUBSCRIPTION,
+                                        UBII_SERVICE_CLIENT_DEREGISTRATION}));
+    EXPECT_EQ(fake.unsubscribe_topics, std::vector<std::string>{"/a"});
+    advance(100);
+    poll(5);
+    ASSERT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+    EXPECT_EQ(fake.subscribe_topics, (std::vector<std::string>{"/a", "/a"})); // asked again
+}
+
+// The master went away while the node was leaving: the unanswered release and deregistration
+// are dropped with the channel, and the next connection starts with its own requests.
+TEST_F(NodeWithFakeMaster, AServiceChannelLostWhileLeavingLeavesNothingQueued)
+{
+    start_ready();
+    Counter counter;
+    ASSERT_EQ(ubii_subscribe(&node, "/a", Counter::on_record, &counter, nullptr), UBII_OK);
+    poll(3);
+    auto answer = fake.answer;
+    fake.answer = [](const ubii_services_ServiceRequest &) { return std::nullopt; };
+    fake.set_state(UBII_CHANNEL_TOPIC, UBII_CHANNEL_LOST);
+    poll(1);
+    ASSERT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);
+    fake.set_state(UBII_CHANNEL_SERVICE, UBII_CHANNEL_LOST);
+    poll(1);
+    fake.answer = answer;
+    advance(100);
+    poll(5);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+}
+
 TEST_F(NodeWithFakeMaster, StopCancelsPendingCallsDeregistersAndCloses)
 {
     start_ready();

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "test_node.h"
+#include "test_port.h"
 #include "ubii/dataStructure/lists.pb.h"
 #include "ubii/devices/device.pb.h"
 
@@ -168,6 +169,58 @@ struct ReplyCatcher {
         }
     }
 };
+
+// Neither master drops a client's subscriptions when it deregisters (PROTOCOL.md 2.8); the node
+// releases them before it deregisters. A raw topic connection under the stopped node's old id
+// (its routing id or ?clientID=) then receives nothing the master would still forward to it.
+TEST(Subscriptions, AStoppedNodeLeavesNoSubscriptionAtTheMaster)
+{
+    TestNode publisher("release-publisher");
+    ASSERT_TRUE(publisher.wait_ready());
+    const std::string topic = unique_topic("/release");
+    std::string old_id;
+    {
+        TestNode node("release-test");
+        ASSERT_TRUE(node.wait_ready());
+        node.collect(topic);
+        node.collect("^" + topic + "$", true);
+        ASSERT_TRUE(node.poll_until([&] {
+            ubii_publish_double(publisher.get(), topic.c_str(), 1.0);
+            ubii_node_poll(publisher.get(), 0);
+            return node.received().size() >= 2; // one copy per subscription
+        }));
+        old_id = ubii_node_client_id(node.get());
+        ASSERT_EQ(ubii_node_stop_wait(node.get(), 3000), UBII_OK);
+        EXPECT_TRUE(node.errors().empty()) << node.errors().front().second;
+    }
+    ubii_test::TestPort raw_port;
+    ubii_port raw = raw_port.get();
+    ASSERT_EQ(raw.vtable->open(raw.context, UBII_CHANNEL_TOPIC, ubii_test::topic_zmq_url().c_str(),
+                               old_id.c_str()),
+              UBII_OK);
+    auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (raw.vtable->state(raw.context, UBII_CHANNEL_TOPIC) != UBII_CHANNEL_OPEN &&
+           std::chrono::steady_clock::now() < until) {
+        raw.vtable->wait(raw.context, 10);
+    }
+    ASSERT_EQ(raw.vtable->state(raw.context, UBII_CHANNEL_TOPIC), UBII_CHANNEL_OPEN);
+    int forwarded = 0;
+    until = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
+    while (std::chrono::steady_clock::now() < until) {
+        ubii_publish_double(publisher.get(), topic.c_str(), 2.0);
+        ubii_node_poll(publisher.get(), 0);
+        raw.vtable->wait(raw.context, 10);
+        const uint8_t *data;
+        size_t size;
+        unsigned flags;
+        while (raw.vtable->receive(raw.context, UBII_CHANNEL_TOPIC, &data, &size, &flags) ==
+               UBII_OK) {
+            forwarded += size != 4 || std::memcmp(data, "PING", 4) != 0;
+        }
+    }
+    raw.vtable->close(raw.context, UBII_CHANNEL_TOPIC);
+    EXPECT_EQ(forwarded, 0) << "the master still forwards to " << old_id;
+}
 
 TEST(Services, TopicListNamesAPublishedTopic)
 {
