@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Pub/sub benchmark: libubii over ZMQ and over WebSocket, on the Linux port (libzmq or its
 # in-thread ZMTP engine, libwebsockets) and on the embedded port (its own ZMTP and WebSocket code),
-# beside the official Node.js node, all against the same local master in one run, with ratios.
+# beside the official Node.js node, each against a freshly started local master, in one run, with
+# ratios.
 # Prints a table; asserts nothing.
 #   bench/run.sh [ROUNDS [MESSAGES [WINDOW]]]    defaults 2000 20000 100
 set -euo pipefail
@@ -24,10 +25,16 @@ exec "$root/scripts/private-net.sh" bash -c '
   set -euo pipefail
   root=$1 build=$2 embedded_build=$3 cache=$4 rounds=$5 messages=$6 window=$7
   state=$(mktemp -d)
-  trap "\"$root/scripts/master.sh\" stop \"\$state\" >/dev/null; rm -rf \"\$state\"" EXIT
-  "$root/scripts/master.sh" start "$state" >/dev/null
+  trap "\"$root/scripts/master.sh\" stop \"\$state\" >/dev/null 2>&1; rm -rf \"\$state\"" EXIT
   client="$cache/npm/node-client/node_modules/@tum-far/ubii-node-nodejs"
-  run() { echo "$1 $(eval "$2")"; }
+  # Each client gets a master of its own, freshly started: a master that has served earlier
+  # clients can be slower (the npm 0.4.0 master kept forwarding to every client that left
+  # subscribed), which would favour whichever client runs first.
+  run() {
+    "$root/scripts/master.sh" start "$state" >/dev/null
+    echo "$1 $(eval "$2")"
+    "$root/scripts/master.sh" stop "$state" >/dev/null
+  }
   {
     run "libubii-zmq" "\"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 $rounds $messages $window"
     run "libubii-websocket" "\"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 ws://127.0.0.1:8104 $rounds $messages $window"
@@ -57,7 +64,7 @@ exec "$root/scripts/private-net.sh" bash -c '
         v[c, \"messages_per_s\"] / v[n, \"messages_per_s\"]
     }
     END {
-      printf \"pub/sub through one local npm 0.4.0 master: %d round trips, %d messages (window %d)\n\", rounds, messages, window
+      printf \"pub/sub through a local npm 0.4.0 master (a fresh one per client): %d round trips, %d messages (window %d)\n\", rounds, messages, window
       printf \"%-27s %10s %10s %10s %10s %10s %10s %10s\n\", \"client\", \"rtt p50 us\", \"rtt p99 us\", \"msgs/s\", \"cpu us/msg\", \"user us\", \"kernel us\", \"switch/msg\"
       for (r = 1; r <= NR; r++)
         printf \"%-27s %10s %10s %10s %10s %10s %10s %10s\n\", name[r], v[r, \"rtt_p50_us\"], v[r, \"rtt_p99_us\"], v[r, \"messages_per_s\"], v[r, \"cpu_us_per_message\"], v[r, \"user_us_per_message\"], v[r, \"system_us_per_message\"], v[r, \"switches_per_message\"]
