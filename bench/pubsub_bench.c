@@ -9,7 +9,8 @@
  * Prints one line of key=value figures (bench/run.sh puts them beside the Node.js node's).
  *
  *   pubsub_bench SERVICE_URL TOPIC_URL [ROUNDS [MESSAGES [WINDOW [FRAME_US]]]]
- * On the Linux port, UBII_BENCH_ZMQ_ENGINE=in-thread speaks tcp:// with UBII_LINUX_ZMQ_IN_THREAD. */
+ * On the Linux port, UBII_BENCH_ZMQ_ENGINE=libzmq speaks tcp:// through libzmq
+ * (UBII_LINUX_ZMQ_LIBZMQ) instead of the default in-thread engine. */
 #define _POSIX_C_SOURCE 200809L
 
 #include <math.h>
@@ -126,13 +127,11 @@ int main(int argc, char **argv)
 #else
     ubii_linux_port_options options = {0};
     options.libwebsockets_log_level = 1;
-    /* A ZMQ-only application need not start libwebsockets at all. */
     const char *engine = getenv("UBII_BENCH_ZMQ_ENGINE");
-    if (engine != NULL && strcmp(engine, "in-thread") == 0) {
-        options.zmq_engine = UBII_LINUX_ZMQ_IN_THREAD;
-    } else {
-        options.zmq_only =
-            strncmp(argv[1], "tcp://", 6) == 0 && strncmp(argv[2], "tcp://", 6) == 0;
+    if (engine != NULL && strcmp(engine, "libzmq") == 0) {
+        /* A ZMQ-only application on libzmq need not start libwebsockets at all. */
+        options.zmq_engine = UBII_LINUX_ZMQ_LIBZMQ;
+        options.zmq_only = strncmp(argv[1], "tcp://", 6) == 0 && strncmp(argv[2], "tcp://", 6) == 0;
     }
     ubii_linux_port *port;
     if (ubii_linux_port_create(&port, &options) != UBII_OK) {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Pub/sub benchmark: libubii over ZMQ and over WebSocket, on the Linux port (libzmq or its
-# in-thread ZMTP engine, libwebsockets) and on the embedded port (its own ZMTP and WebSocket code),
+# Pub/sub benchmark: libubii over ZMQ and over WebSocket, on the Linux port (its default in-thread
+# ZMTP engine or libzmq, libwebsockets) and on the embedded port (its own ZMTP and WebSocket code),
 # beside the official Node.js node, each against a freshly started local master, in one run, with
 # ratios.
 # Prints a table; asserts nothing.
@@ -38,7 +38,7 @@ exec "$root/scripts/private-net.sh" bash -c '
   {
     run "libubii-zmq" "\"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 $rounds $messages $window"
     run "libubii-websocket" "\"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 ws://127.0.0.1:8104 $rounds $messages $window"
-    run "libubii-zmq-in-thread" "UBII_BENCH_ZMQ_ENGINE=in-thread \"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 $rounds $messages $window"
+    run "libubii-zmq-libzmq" "UBII_BENCH_ZMQ_ENGINE=libzmq \"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 $rounds $messages $window"
     run "embedded-zmtp" "\"$embedded_build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 $rounds $messages $window"
     run "embedded-websocket" "\"$embedded_build/bench/pubsub_bench\" tcp://127.0.0.1:8101 ws://127.0.0.1:8104 $rounds $messages $window"
     # The same clients polled once per 60 Hz frame, as a game engine pumps them (the Node.js
@@ -46,7 +46,7 @@ exec "$root/scripts/private-net.sh" bash -c '
     frame=16667 frame_window=$((window * 10))
     run "libubii-zmq@60Hz" "\"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 10 $messages $frame_window $frame"
     run "libubii-websocket@60Hz" "\"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 ws://127.0.0.1:8104 10 $messages $frame_window $frame"
-    run "libubii-zmq-in-thread@60Hz" "UBII_BENCH_ZMQ_ENGINE=in-thread \"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 10 $messages $frame_window $frame"
+    run "libubii-zmq-libzmq@60Hz" "UBII_BENCH_ZMQ_ENGINE=libzmq \"$build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 10 $messages $frame_window $frame"
     run "embedded-zmtp@60Hz" "\"$embedded_build/bench/pubsub_bench\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 10 $messages $frame_window $frame"
     run "embedded-websocket@60Hz" "\"$embedded_build/bench/pubsub_bench\" tcp://127.0.0.1:8101 ws://127.0.0.1:8104 10 $messages $frame_window $frame"
     run "nodejs-zmq" "node \"$root/bench/nodejs_bench.js\" \"$client\" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 $rounds $messages $window | sed -n \"s/^RESULT //p\""
@@ -69,11 +69,11 @@ exec "$root/scripts/private-net.sh" bash -c '
       for (r = 1; r <= NR; r++)
         printf \"%-27s %10s %10s %10s %10s %10s %10s %10s\n\", name[r], v[r, \"rtt_p50_us\"], v[r, \"rtt_p99_us\"], v[r, \"messages_per_s\"], v[r, \"cpu_us_per_message\"], v[r, \"user_us_per_message\"], v[r, \"system_us_per_message\"], v[r, \"switches_per_message\"]
       printf \"ratios, Node.js / libubii on the same transport (higher is better for libubii; throughput libubii / Node.js):\n\"
-      ratio(\"libubii-zmq\", \"nodejs-zmq\"); ratio(\"libubii-zmq-in-thread\", \"nodejs-zmq\")
+      ratio(\"libubii-zmq\", \"nodejs-zmq\"); ratio(\"libubii-zmq-libzmq\", \"nodejs-zmq\")
       ratio(\"libubii-websocket\", \"nodejs-websocket\")
       ratio(\"embedded-zmtp\", \"nodejs-zmq\"); ratio(\"embedded-websocket\", \"nodejs-websocket\")
       printf \"polled once per 60 Hz frame, window %d (latency columns of these rows are meaningless: they measure 10 round trips only):\n\", window * 10
-      ratio(\"libubii-zmq@60Hz\", \"nodejs-zmq\"); ratio(\"libubii-zmq-in-thread@60Hz\", \"nodejs-zmq\")
+      ratio(\"libubii-zmq@60Hz\", \"nodejs-zmq\"); ratio(\"libubii-zmq-libzmq@60Hz\", \"nodejs-zmq\")
       ratio(\"libubii-websocket@60Hz\", \"nodejs-websocket\")
       ratio(\"embedded-zmtp@60Hz\", \"nodejs-zmq\"); ratio(\"embedded-websocket@60Hz\", \"nodejs-websocket\")
       printf \"kernel time is loopback TCP to and from the master and thread wake-ups (switch/msg: context switches per message)\n\"

@@ -60,8 +60,8 @@ int main(int argc, char **argv)
     example_args args = example_parse_args(argc, argv, 3.0);
     ubii_linux_port_options options = {0};
     options.libwebsockets_log_level = 1;
-    /* ZMQ in this thread, as the frame loop pumps it: no libzmq I/O thread waking per message. */
-    options.zmq_engine = UBII_LINUX_ZMQ_IN_THREAD;
+    /* The default tcp:// engine runs in this thread, as the frame loop pumps it: no libzmq I/O
+     * thread wakes for every message. */
     ubii_linux_port *port = NULL;
     if (ubii_linux_port_create(&port, &options) != UBII_OK) {
         return 1;

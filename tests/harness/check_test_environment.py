@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Checks that the tests which run a suite again with other settings really get those settings,
 as ctest will run them. A ';' inside a gtest_discover_tests ENVIRONMENT value splits it: the
-in_thread_zmq suites once ran on libzmq unnoticed, and ocr_node_test without its thread limit.
+second tcp:// engine's suites once ran on the default engine unnoticed, and ocr_node_test without
+its thread limit.
 
     check_test_environment.py CTEST BUILD_DIR [REQUIRED_PREFIX ...]
 
-A REQUIRED_PREFIX names tests that must exist (e.g. in_thread_zmq. on the Linux port).
+A REQUIRED_PREFIX names tests that must exist (e.g. libzmq. on the Linux port).
 """
 import json
 import subprocess
@@ -13,7 +14,7 @@ import sys
 
 # Test name prefix -> variable -> value it must have.
 EXPECTED = {
-    "in_thread_zmq.": {"UBII_TEST_ZMQ_ENGINE": "in-thread"},
+    "libzmq.": {"UBII_TEST_ZMQ_ENGINE": "libzmq"},
     "OcrNode": {"OMP_THREAD_LIMIT": "1"},
 }
 

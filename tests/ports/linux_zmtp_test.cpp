@@ -1,9 +1,11 @@
-// The Linux port's in-thread ZMQ engine (UBII_LINUX_ZMQ_IN_THREAD) against a hand-written ZMTP
-// peer on loopback: what goes over the wire, and what the port does with bytes the master would
-// never send. Everything runs in the test's thread: the peer is served between the port's waits.
+// The Linux port's in-thread ZMQ engine (UBII_LINUX_ZMQ_IN_THREAD, the default) against a
+// hand-written ZMTP peer on loopback: what goes over the wire, and what the port does with bytes
+// the master would never send. Everything runs in the test's thread: the peer is served between the
+// port's waits.
 #include <gtest/gtest.h>
 
 #include <arpa/inet.h>
+#include <dirent.h>
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
@@ -319,6 +321,47 @@ TEST_F(InThreadZmtp, ConnectionRefusedAndClosedByThePeerAreLost)
     open_topic();
     peer_.drop_client(); // the master goes away
     EXPECT_TRUE(pump_until([&] { return state(UBII_CHANNEL_TOPIC) == UBII_CHANNEL_LOST; }));
+}
+
+int thread_count()
+{
+    int count = 0;
+    if (DIR *tasks = opendir("/proc/self/task")) {
+        while (const dirent *entry = readdir(tasks)) {
+            count += entry->d_name[0] != '.';
+        }
+        closedir(tasks);
+    }
+    return count;
+}
+
+// With default options a node adds no thread to the process: tcp:// is spoken in the thread that
+// polls (a game engine's, a firmware loop's), not through libzmq's I/O threads.
+TEST(LinuxPortDefaults, TcpRunsInTheCallersThread)
+{
+    Peer peer;
+    const int threads_before = thread_count();
+    ubii_linux_port_options options{};
+    options.libwebsockets_log_level = 1;
+    ubii_linux_port *linux_port = nullptr;
+    ASSERT_EQ(ubii_linux_port_create(&linux_port, &options), UBII_OK);
+    ubii_port port = ubii_linux_port_get(linux_port);
+    ASSERT_EQ(port.vtable->open(port.context, UBII_CHANNEL_TOPIC, peer.url().c_str(), "client-7"),
+              UBII_OK);
+    auto pump_until = [&](const std::function<bool()> &done) {
+        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+        while (!done() && std::chrono::steady_clock::now() < deadline) {
+            port.vtable->wait(port.context, 5);
+            peer.serve();
+        }
+        return done();
+    };
+    ASSERT_TRUE(pump_until([&] { return peer.connected() && peer.received.size() >= 64; }));
+    peer.send_bytes(peer_handshake("ROUTER"));
+    ASSERT_TRUE(pump_until(
+        [&] { return port.vtable->state(port.context, UBII_CHANNEL_TOPIC) == UBII_CHANNEL_OPEN; }));
+    EXPECT_EQ(thread_count(), threads_before);
+    ubii_linux_port_destroy(linux_port);
 }
 
 TEST(InThreadZmtpOptions, RefusedWithZmqOnlyAndUnknownEngines)

@@ -18,10 +18,12 @@ TestPort::TestPort(Tls tls) : impl_(std::make_unique<Impl>())
     options.libwebsockets_log_level = 1;  // LLL_ERR: no notice per HTTP transaction
     options.enable_tls = tls != Tls::off; // only the TLS tests need it
     options.allow_self_signed = tls == Tls::allow_self_signed;
-    // The suite runs once per tcp:// engine (tests/CMakeLists.txt).
+    // The suite runs once per tcp:// engine (tests/CMakeLists.txt): the default, then libzmq.
     const char *engine = std::getenv("UBII_TEST_ZMQ_ENGINE");
-    if (engine != nullptr && std::strcmp(engine, "in-thread") == 0) {
-        options.zmq_engine = UBII_LINUX_ZMQ_IN_THREAD;
+    if (engine != nullptr && std::strcmp(engine, "libzmq") == 0) {
+        options.zmq_engine = UBII_LINUX_ZMQ_LIBZMQ;
+    } else if (engine != nullptr && engine[0] != '\0') {
+        throw std::runtime_error(std::string("unknown UBII_TEST_ZMQ_ENGINE: ") + engine);
     }
     if (ubii_linux_port_create(&impl_->port, &options) != UBII_OK) {
         throw std::runtime_error("cannot create the Linux port");

@@ -242,6 +242,10 @@ ubii_status ubii_linux_port_create(ubii_linux_port **result, const ubii_linux_po
     if (options != NULL) {
         port->options = *options;
     }
+    if (port->options.zmq_engine == UBII_LINUX_ZMQ_DEFAULT) {
+        port->options.zmq_engine =
+            port->options.zmq_only ? UBII_LINUX_ZMQ_LIBZMQ : UBII_LINUX_ZMQ_IN_THREAD;
+    }
     if ((port->options.zmq_engine != UBII_LINUX_ZMQ_LIBZMQ &&
          port->options.zmq_engine != UBII_LINUX_ZMQ_IN_THREAD) ||
         (port->options.zmq_engine == UBII_LINUX_ZMQ_IN_THREAD && port->options.zmq_only)) {

@@ -3,10 +3,10 @@
 
 /* The Linux port: ZeroMQ (tcp://) for services and topic data, libwebsockets for WebSocket topic
  * data (ws://, wss://) and binary HTTP services (http://, https://). Unlike the core, this port
- * allocates (libzmq and libwebsockets do); it starts no thread of its own besides libzmq's I/O
- * thread, and none at all with UBII_LINUX_ZMQ_IN_THREAD. Host names in ws:// and http:// URLs are
- * resolved by libwebsockets synchronously when a connection starts; where a frame must never stall,
- * give an IP address.
+ * allocates (libzmq and libwebsockets do). It starts no thread, unless tcp:// is spoken through
+ * libzmq (UBII_LINUX_ZMQ_LIBZMQ, or zmq_only), whose threads then run. Host names in URLs that
+ * libwebsockets connects (all but libzmq's) are resolved synchronously when a connection starts;
+ * where a frame must never stall, give an IP address.
  *
  *     ubii_linux_port *linux_port;
  *     ubii_linux_port_create(&linux_port, NULL);
@@ -30,14 +30,16 @@ typedef struct ubii_linux_port ubii_linux_port;
 
 /* How tcp:// URLs (ZMQ) are spoken. */
 typedef enum ubii_linux_zmq_engine {
-    /* libzmq (the default): a REQ and a DEALER socket. libzmq's I/O thread wakes for every
-     * message that arrives, whether or not the node is being polled. */
-    UBII_LINUX_ZMQ_LIBZMQ = 0,
+    /* UBII_LINUX_ZMQ_IN_THREAD, or UBII_LINUX_ZMQ_LIBZMQ with zmq_only. */
+    UBII_LINUX_ZMQ_DEFAULT = 0,
+    /* libzmq: a REQ and a DEALER socket, integrated through ZMQ_FD/ZMQ_EVENTS. libzmq's I/O
+     * thread wakes for every message that arrives, whether or not the node is being polled. */
+    UBII_LINUX_ZMQ_LIBZMQ = 1,
     /* ZMTP 3 written by libubii over a libwebsockets raw socket, in the thread that polls the
      * node: no extra thread, and a node polled once per frame takes the frame's messages in a few
-     * reads and sends its own in one write (bench/run.sh: about 6x less CPU per message than
+     * reads and sends its own in one write (bench/run.sh: tens of times less CPU per message than
      * libzmq when polled at 60 Hz). The master sees the same REQ and DEALER peers. */
-    UBII_LINUX_ZMQ_IN_THREAD = 1
+    UBII_LINUX_ZMQ_IN_THREAD = 2
 } ubii_linux_zmq_engine;
 
 typedef struct ubii_linux_port_options {
