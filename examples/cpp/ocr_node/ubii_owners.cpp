@@ -10,6 +10,10 @@ LinuxPort make_linux_port()
 {
     ubii_linux_port_options options = {};
     options.libwebsockets_log_level = 1; // errors only
+    // Recognition keeps the polling thread busy for hundreds of milliseconds. libzmq's I/O thread
+    // takes frames in meanwhile, so the next poll has the newest one and the stale ones are
+    // dropped; the in-thread engine would leave them queued at the master, to be read in turn.
+    options.zmq_engine = UBII_LINUX_ZMQ_LIBZMQ;
     ubii_linux_port *port = nullptr;
     const ubii_status status = ubii_linux_port_create(&port, &options);
     if (status != UBII_OK)

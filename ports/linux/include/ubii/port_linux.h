@@ -33,7 +33,9 @@ typedef enum ubii_linux_zmq_engine {
     /* UBII_LINUX_ZMQ_IN_THREAD, or UBII_LINUX_ZMQ_LIBZMQ with zmq_only. */
     UBII_LINUX_ZMQ_DEFAULT = 0,
     /* libzmq: a REQ and a DEALER socket, integrated through ZMQ_FD/ZMQ_EVENTS. libzmq's I/O
-     * thread wakes for every message that arrives, whether or not the node is being polled. */
+     * thread wakes for every message that arrives, whether or not the node is being polled: the
+     * choice where the polling thread is busy for long stretches and messages should keep coming
+     * in meanwhile (examples/cpp/ocr_node keeps only the newest frame). */
     UBII_LINUX_ZMQ_LIBZMQ = 1,
     /* ZMTP 3 written by libubii over a libwebsockets raw socket, in the thread that polls the
      * node: no extra thread, and a node polled once per frame takes the frame's messages in a few
