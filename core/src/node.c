@@ -225,9 +225,10 @@ static ubii_status enqueue_deregistration(ubii_node *node)
 }
 
 /* Ends the current connection like tear_down, except that a node the master registered, whose
- * service channel still works (only its topic data connection failed), deregisters first: every
- * retry registers anew, and the master would otherwise keep one stale client per attempt. The
- * service channel closes when the deregistration is answered or fails (deregistration_done). */
+ * service channel still works (only its topic data connection failed), releases its
+ * subscriptions and deregisters first: every retry registers anew, and the master would otherwise
+ * keep one stale client per attempt. The service channel closes when the deregistration is
+ * answered or fails (deregistration_done). */
 static void leave(ubii_node *node)
 {
     void *port = node->port.context;
