@@ -2,10 +2,12 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <functional>
 #include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <poll.h>
 
 #include "test_node.h"
 
@@ -193,6 +195,88 @@ TEST_P(NodeFrameTick, PollWithATimeoutWaitsAlthoughEachRoundPublishes)
     }
     // About 10 rounds of 50 ms; a poll that returns after the write makes thousands.
     EXPECT_LE(rounds, 50) << "published " << rounds << " times in " << span.count() << " ms";
+}
+
+// An event loop (libuv's, an engine's) that sleeps until one of the node's fds is ready or its
+// deadline comes, and only then calls ubii_node_poll(node, 0): the fds must say when the node
+// has work, writing included (a connection being set up, output the socket did not take yet).
+// The application's own timer, if any, wakes the loop every `tick`. Returns false when the loop
+// slept past `limit` without `done` holding.
+bool run_event_loop(TestNode &node, const std::function<bool()> &done,
+                    std::chrono::milliseconds limit,
+                    std::chrono::milliseconds tick = std::chrono::milliseconds::max())
+{
+    const auto end = std::chrono::steady_clock::now() + limit;
+    while (!done()) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            end - std::chrono::steady_clock::now());
+        if (left.count() <= 0) {
+            return false;
+        }
+        ubii_pollfd node_fds[8];
+        pollfd fds[8];
+        const int count = std::min(ubii_node_pollfds(node.get(), node_fds, 8), 8);
+        for (int i = 0; i < count; ++i) {
+            fds[i] = pollfd{node_fds[i].fd, node_fds[i].events, 0};
+        }
+        const int deadline = ubii_node_next_timeout_ms(node.get());
+        int timeout = static_cast<int>(std::min(left, tick).count());
+        if (deadline >= 0 && deadline < timeout) {
+            timeout = deadline;
+        }
+        poll(fds, static_cast<nfds_t>(count), timeout);
+        if (ubii_node_poll(node.get(), 0) != UBII_OK) {
+            return false;
+        }
+    }
+    return true;
+}
+
+TEST_P(NodeFrameTick, AnEventLoopWaitingOnTheNodesFdsConnectsAndMovesMegabytes)
+{
+    TestNode node("event-loop-test", GetParam());
+    node.config().service_timeout_ms = 2000;
+    ASSERT_TRUE(node.poll_until([] { return true; })); // initialised, not started
+    ASSERT_EQ(node.start(), UBII_OK);
+    ASSERT_TRUE(run_event_loop(
+        node, [&] { return ubii_node_state(node.get()) == UBII_STATE_READY; },
+        std::chrono::seconds(10)))
+        << ubii_state_name(ubii_node_state(node.get())) << "; " << node.transport_error();
+    const std::string topic = unique_topic("/event-loop");
+    node.collect(topic);
+    // Until the subscription is served: one record per 50 ms, on the application's timer (a flood
+    // would fill the master's queue to this node, which then drops what comes next).
+    auto last_published = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+    ASSERT_TRUE(run_event_loop(
+        node,
+        [&] {
+            const auto now = std::chrono::steady_clock::now();
+            if (now - last_published >= std::chrono::milliseconds(50)) {
+                ubii_publish_double(node.get(), topic.c_str(), 1.0);
+                last_published = now;
+            }
+            return !node.received().empty();
+        },
+        std::chrono::seconds(10), std::chrono::milliseconds(50)));
+    node.received().clear();
+    const size_t size = std::min<size_t>(4u << 20, TestPort::max_message_size() - 512);
+    const std::vector<uint8_t> pixels(size, 0x5a);
+    ASSERT_EQ(ubii_publish_image(node.get(), topic.c_str(), static_cast<int32_t>(size), 1,
+                                 ubii_dataStructure_Image2D_DataFormat_GRAY8, pixels.data(),
+                                 pixels.size()),
+              UBII_OK);
+    EXPECT_TRUE(run_event_loop(
+        node,
+        [&] {
+            for (const Received &record : node.received()) {
+                if (record.type == UBII_RECORD_IMAGE2D && record.value.size() >= size) {
+                    return true;
+                }
+            }
+            return false;
+        },
+        std::chrono::seconds(10)))
+        << node.received().size() << " records back";
 }
 
 INSTANTIATE_TEST_SUITE_P(Transports, NodeFrameTick,

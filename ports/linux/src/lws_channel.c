@@ -12,6 +12,7 @@
  * WSI_DESTROY. */
 #define _POSIX_C_SOURCE 200809L /* dup */
 
+#include <poll.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -556,6 +557,9 @@ static int on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void 
     }
     lws_channel *ch = ubii__lws_channel_of(connection);
     switch (reason) {
+    case LWS_CALLBACK_CLIENT_APPEND_HANDSHAKE_HEADER:
+        connection->setup_written = true; /* lws writes the upgrade request now */
+        break;
     case LWS_CALLBACK_CLIENT_ESTABLISHED:
         if (ch != NULL) {
             connection->port->channels[connection->which].state = UBII_CHANNEL_OPEN;
@@ -686,6 +690,7 @@ static int on_http(struct lws *wsi, enum lws_callback_reasons reason, void *user
             return -1;
         }
         lws_client_http_body_pending(wsi, 0);
+        connection->setup_written = true;
         break;
     case LWS_CALLBACK_ESTABLISHED_CLIENT_HTTP:
         connection->status = (int)lws_http_client_http_response(wsi);
@@ -964,6 +969,16 @@ void ubii__lws_service(ubii_linux_port *port, int timeout_ms)
     }
 }
 
+/* POLLOUT only while a connection has something to write: lws keeps its own poll set, which
+ * Debian's build does not expose (no external-poll support), so an external loop learns it here. */
+static short events_of(ubii_linux_port *port, int which, lws_connection *connection)
+{
+    channel *c = &port->channels[which];
+    bool writing = !connection->setup_written || lws_partial_buffered(connection->wsi) ||
+                   (writer_of(c) != NULL && output_waits(connection, &c->lws));
+    return (short)(POLLIN | (writing ? POLLOUT : 0));
+}
+
 int ubii__lws_fds(ubii_linux_port *port, ubii_pollfd *fds, int capacity)
 {
     int count = 0;
@@ -976,7 +991,7 @@ int ubii__lws_fds(ubii_linux_port *port, ubii_pollfd *fds, int capacity)
         if (fd >= 0) {
             if (count < capacity) {
                 fds[count].fd = fd;
-                fds[count].events = 1; /* POLLIN */
+                fds[count].events = events_of(port, i, connection);
             }
             count++;
         }

@@ -37,6 +37,9 @@ typedef struct lws_connection {
     ubii_channel which;
     struct lws *wsi;
     bool http;
+    /* What the connection writes before its outbox (the ZMTP greeting, the WebSocket upgrade, the
+     * HTTP request) has been handed to lws: until then it waits to write (pollfds says POLLOUT). */
+    bool setup_written;
     /* ZMTP in the caller's thread (tcp:// with UBII_LINUX_ZMQ_IN_THREAD): a REQ or a DEALER, and
      * how far the master's half of the handshake has come. The greeting and READY to send wait
      * in `request` until the connection is up; `assembly` gathers the byte stream. */

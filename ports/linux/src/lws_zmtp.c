@@ -78,6 +78,7 @@ int ubii__lws_on_zmtp(struct lws *wsi, enum lws_callback_reasons reason, void *u
             ubii__lws_lose(connection, "ZMTP handshake could not be written", NULL);
             return -1;
         }
+        connection->setup_written = true;
         break;
     case LWS_CALLBACK_RAW_RX:
         if (ch == NULL) {
