@@ -39,8 +39,8 @@ typedef enum ubii_linux_zmq_engine {
     UBII_LINUX_ZMQ_LIBZMQ = 1,
     /* ZMTP 3 written by libubii over a libwebsockets raw socket, in the thread that polls the
      * node: no extra thread, and a node polled once per frame takes the frame's messages in a few
-     * reads and sends its own in one write (bench/run.sh: tens of times less CPU per message than
-     * libzmq when polled at 60 Hz). The master sees the same REQ and DEALER peers. */
+     * reads and sends its own in one write (bench/run.sh at 60 Hz: 0.5 against libzmq's 8.9 µs of
+     * CPU per message). The master sees the same REQ and DEALER peers. */
     UBII_LINUX_ZMQ_IN_THREAD = 2
 } ubii_linux_zmq_engine;
 
