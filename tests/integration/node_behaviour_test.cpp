@@ -260,14 +260,22 @@ TEST(Services, UnknownServiceTopicIsABrokerError)
     EXPECT_EQ(next.status, UBII_OK);
 }
 
+// A TopicSubscription request, with no topics, on behalf of `client_id`.
+ubii_services_ServiceRequest subscription_request_for(const std::string &client_id)
+{
+    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    std::strcpy(request.topic, UBII_SERVICE_TOPIC_SUBSCRIPTION);
+    request.which_type = ubii_services_ServiceRequest_topic_subscription_tag;
+    std::strcpy(request.type.topic_subscription.client_id, client_id.c_str());
+    return request;
+}
+
 TEST(Services, SubscribingForAnUnknownClientIdIsABrokerError)
 {
     TestNode node("unknown-client-test");
     ASSERT_TRUE(node.wait_ready());
-    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
-    std::strcpy(request.topic, UBII_SERVICE_TOPIC_SUBSCRIPTION);
-    request.which_type = ubii_services_ServiceRequest_topic_subscription_tag;
-    std::strcpy(request.type.topic_subscription.client_id, "00000000-0000-4000-8000-000000000000");
+    ubii_services_ServiceRequest request =
+        subscription_request_for("00000000-0000-4000-8000-000000000000");
     ReplyCatcher catcher;
     ASSERT_EQ(ubii_call(node.get(), &request, 0, ReplyCatcher::on_reply, &catcher), UBII_OK);
     ASSERT_TRUE(node.poll_until([&] { return catcher.done; }));
@@ -289,10 +297,7 @@ TEST(Services, ANodeWhoseTopicConnectionFailsLeavesNoRegistrationBehind)
     ASSERT_EQ(node.registered_ids().size(), 2u);
     poll_for(node, 1000); // the last deregistration, bounded by the service timeout
     for (const std::string &id : node.registered_ids()) {
-        ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
-        std::strcpy(request.topic, UBII_SERVICE_TOPIC_SUBSCRIPTION);
-        request.which_type = ubii_services_ServiceRequest_topic_subscription_tag;
-        std::strcpy(request.type.topic_subscription.client_id, id.c_str());
+        ubii_services_ServiceRequest request = subscription_request_for(id);
         ReplyCatcher catcher;
         ASSERT_EQ(ubii_call(witness.get(), &request, 0, ReplyCatcher::on_reply, &catcher), UBII_OK);
         ASSERT_TRUE(witness.poll_until([&] { return catcher.done; }));

@@ -938,14 +938,19 @@ static void service_once(ubii_linux_port *port, int timeout_ms)
     lws_sul_cancel(&safety);
 }
 
+/* Bytes lws holds back, or an open channel's messages not yet handed to lws. */
+static bool has_output(channel *c, lws_connection *connection)
+{
+    return lws_partial_buffered(connection->wsi) ||
+           (writer_of(c) != NULL && output_waits(connection, &c->lws));
+}
+
 /* A connection holding output its socket has room for now. */
 static bool output_can_go_on(ubii_linux_port *port)
 {
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
         lws_connection *connection = writer_of(&port->channels[i]);
-        if (connection != NULL &&
-            (output_waits(connection, &port->channels[i].lws) ||
-             lws_partial_buffered(connection->wsi)) &&
+        if (connection != NULL && has_output(&port->channels[i], connection) &&
             !lws_send_pipe_choked(connection->wsi)) {
             return true;
         }
@@ -971,11 +976,9 @@ void ubii__lws_service(ubii_linux_port *port, int timeout_ms)
 
 /* POLLOUT only while a connection has something to write: lws keeps its own poll set, which
  * Debian's build does not expose (no external-poll support), so an external loop learns it here. */
-static short events_of(ubii_linux_port *port, int which, lws_connection *connection)
+static short events_of(channel *c, lws_connection *connection)
 {
-    channel *c = &port->channels[which];
-    bool writing = !connection->setup_written || lws_partial_buffered(connection->wsi) ||
-                   (writer_of(c) != NULL && output_waits(connection, &c->lws));
+    bool writing = !connection->setup_written || has_output(c, connection);
     return (short)(POLLIN | (writing ? POLLOUT : 0));
 }
 
@@ -991,7 +994,7 @@ int ubii__lws_fds(ubii_linux_port *port, ubii_pollfd *fds, int capacity)
         if (fd >= 0) {
             if (count < capacity) {
                 fds[count].fd = fd;
-                fds[count].events = events_of(port, i, connection);
+                fds[count].events = events_of(&port->channels[i], connection);
             }
             count++;
         }
