@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config git
-  nanopb libnanopb-dev protobuf-compiler python3-protobuf
+  nanopb libnanopb-dev protobuf-compiler python3-protobuf libprotobuf-dev
   libzmq3-dev libwebsockets-dev
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev clang-format

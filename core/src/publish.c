@@ -172,6 +172,17 @@ ubii_status ubii_publish_message(ubii_node *node, const char *topic, ubii_record
     return ubii__publish(node, topic, (uint32_t)type, write_message, &value);
 }
 
+ubii_status ubii_publish_encoded(ubii_node *node, const char *topic, ubii_record_type type,
+                                 const uint8_t *bytes, size_t size)
+{
+    if ((bytes == NULL && size > 0) || !ubii__record_type_known((uint32_t)type) ||
+        ubii__record_wire_type((uint32_t)type) != PB_WT_STRING) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    bytes_value value = {bytes, size};
+    return ubii__publish(node, topic, (uint32_t)type, write_bytes, &value);
+}
+
 ubii_status ubii_publish_vector2(ubii_node *node, const char *topic,
                                  const ubii_dataStructure_Vector2 *value)
 {

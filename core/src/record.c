@@ -42,6 +42,52 @@ bool ubii__record_type_known(uint32_t number)
     }
 }
 
+typedef struct member_info {
+    ubii_record_type type;
+    const char *name;
+    const char *format;
+} member_info;
+
+#define UBII_MEMBER_INFO(upper, number, name, format, cpp_type) {UBII_RECORD_##upper, name, format},
+static const member_info members[] = {UBII_RECORD_MEMBER_LIST(UBII_MEMBER_INFO)};
+#undef UBII_MEMBER_INFO
+enum { MEMBER_COUNT = sizeof members / sizeof members[0] };
+
+static const member_info *find_member(ubii_record_type type)
+{
+    for (size_t i = 0; i < MEMBER_COUNT; ++i) {
+        if (members[i].type == type) {
+            return &members[i];
+        }
+    }
+    return NULL;
+}
+
+const char *ubii_record_type_name(ubii_record_type type)
+{
+    const member_info *member = find_member(type);
+    return member != NULL ? member->name : NULL;
+}
+
+const char *ubii_record_type_format(ubii_record_type type)
+{
+    const member_info *member = find_member(type);
+    return member != NULL ? member->format : NULL;
+}
+
+ubii_record_type ubii_record_type_for_format(const char *format)
+{
+    if (format == NULL) {
+        return UBII_RECORD_NONE;
+    }
+    for (size_t i = 0; i < MEMBER_COUNT; ++i) {
+        if (strcmp(members[i].format, format) == 0) {
+            return members[i].type;
+        }
+    }
+    return UBII_RECORD_NONE;
+}
+
 int ubii__record_wire_type(uint32_t number)
 {
     switch (number) {

@@ -70,15 +70,13 @@ ubii_status ubii_reply_decode(const ubii_reply *reply, uint32_t expected_member,
     return pb_decode(&stream, fields, message) ? UBII_OK : UBII_ERR_DECODE;
 }
 
-ubii_status ubii__enqueue(ubii_node *node, const ubii_services_ServiceRequest *request,
-                          uint32_t timeout_ms, uint8_t purpose, ubii__callback fn, void *user)
+/* Reserves the queue room for a request of `size` bytes and its call entry; *bytes receives where
+ * the encoded request goes. */
+static ubii_status reserve_call(ubii_node *node, size_t size, uint32_t timeout_ms, uint8_t purpose,
+                                ubii__callback fn, void *user, uint8_t **bytes)
 {
     if (node->call_count == UBII_SERVICE_QUEUE_DEPTH) {
         return UBII_ERR_FULL;
-    }
-    size_t size = 0;
-    if (!pb_get_encoded_size(&size, ubii_services_ServiceRequest_fields, request)) {
-        return UBII_ERR_ENCODE;
     }
     if (size > UBII_SERVICE_QUEUE_BYTES) {
         return UBII_ERR_TOO_LARGE;
@@ -86,18 +84,41 @@ ubii_status ubii__enqueue(ubii_node *node, const ubii_services_ServiceRequest *r
     if (size > UBII_SERVICE_QUEUE_BYTES - node->queue_used) {
         return UBII_ERR_FULL;
     }
-    pb_ostream_t stream = pb_ostream_from_buffer(node->queue_bytes + node->queue_used, size);
-    if (!pb_encode(&stream, ubii_services_ServiceRequest_fields, request)) {
-        return UBII_ERR_ENCODE;
-    }
-    ubii__call *call = &node->calls[node->call_count++];
+    *bytes = node->queue_bytes + node->queue_used;
+    ubii__call *call = &node->calls[node->call_count];
     call->offset = node->queue_used;
     call->size = (uint32_t)size;
     call->timeout_ms = timeout_ms != 0 ? timeout_ms : node->config.service_timeout_ms;
     call->fn = fn;
     call->user = user;
     call->purpose = purpose;
-    node->queue_used += (uint32_t)size;
+    return UBII_OK;
+}
+
+/* Makes the call reserved last part of the queue. */
+static void commit_call(ubii_node *node)
+{
+    node->queue_used += node->calls[node->call_count].size;
+    node->call_count++;
+}
+
+ubii_status ubii__enqueue(ubii_node *node, const ubii_services_ServiceRequest *request,
+                          uint32_t timeout_ms, uint8_t purpose, ubii__callback fn, void *user)
+{
+    size_t size = 0;
+    if (!pb_get_encoded_size(&size, ubii_services_ServiceRequest_fields, request)) {
+        return UBII_ERR_ENCODE;
+    }
+    uint8_t *bytes = NULL;
+    ubii_status status = reserve_call(node, size, timeout_ms, purpose, fn, user, &bytes);
+    if (status != UBII_OK) {
+        return status;
+    }
+    pb_ostream_t stream = pb_ostream_from_buffer(bytes, size);
+    if (!pb_encode(&stream, ubii_services_ServiceRequest_fields, request)) {
+        return UBII_ERR_ENCODE;
+    }
+    commit_call(node);
     return UBII_OK;
 }
 
@@ -255,4 +276,41 @@ ubii_status ubii_call_topic(ubii_node *node, const char *topic, uint32_t timeout
         return UBII_ERR_INVALID_ARGUMENT;
     }
     return ubii_call(node, &request, timeout_ms, fn, user);
+}
+
+/* A request encoded elsewhere (another protobuf runtime, e.g. the C++ layer's) must at least be
+ * protobuf with a topic (field 1), or the master could not route it. */
+static bool names_a_topic(const uint8_t *request, size_t size)
+{
+    ubii_wire_scan scan;
+    ubii_wire_field field;
+    bool malformed = false;
+    bool topic = false;
+    ubii_wire_scan_init(&scan, request, size);
+    while (ubii_wire_scan_next(&scan, &field, &malformed)) {
+        if (field.number == ubii_services_ServiceRequest_topic_tag) {
+            topic = field.wire_type == PB_WT_STRING && field.size > 0;
+        }
+    }
+    return !malformed && topic;
+}
+
+ubii_status ubii_call_encoded(ubii_node *node, const uint8_t *request, size_t size,
+                              uint32_t timeout_ms, ubii_reply_fn fn, void *user)
+{
+    if (node == NULL || request == NULL || !names_a_topic(request, size)) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    if (node->state != UBII_STATE_READY) {
+        return UBII_ERR_NOT_CONNECTED;
+    }
+    uint8_t *bytes = NULL;
+    ubii_status status = reserve_call(node, size, timeout_ms, UBII__CALL_APPLICATION,
+                                      (ubii__callback)fn, user, &bytes);
+    if (status != UBII_OK) {
+        return status;
+    }
+    memcpy(bytes, request, size);
+    commit_call(node);
+    return UBII_OK;
 }

@@ -57,6 +57,13 @@ UBII_API ubii_status ubii_call(ubii_node *node, const ubii_services_ServiceReque
 UBII_API ubii_status ubii_call_topic(ubii_node *node, const char *topic, uint32_t timeout_ms,
                                      ubii_reply_fn fn, void *user);
 
+/* The same with a ServiceRequest that is already encoded (by another protobuf runtime, e.g. a
+ * language binding's): `request` holds its `size` bytes, copied into the queue at once. It must be
+ * valid protobuf with a non-empty topic (else UBII_ERR_INVALID_ARGUMENT); the rest is not checked.
+ */
+UBII_API ubii_status ubii_call_encoded(ubii_node *node, const uint8_t *request, size_t size,
+                                       uint32_t timeout_ms, ubii_reply_fn fn, void *user);
+
 /* Device registration: ubii/devices.h (full schema only). */
 
 /* Decodes the reply's member into `message` if it is `expected_member`: UBII_ERR_WRONG_TYPE if

@@ -70,6 +70,15 @@ typedef struct ubii_record {
     uint64_t scalar; /* double/float bits, int32 and bool values */
 } ubii_record;
 
+/* The schema's facts about a member, from the generated table (NULL / UBII_RECORD_NONE for a type
+ * this build's schema lacks): its .proto name ("vector3", "pose3D", "object2D_list"), and its
+ * message format as ProcessingModule inputs and outputs name it ("double", "string",
+ * "ubii.dataStructure.Vector3"). For a format two members share (Quaternion: quaternion and the
+ * upstream quirk quaternion_list), ubii_record_type_for_format gives the lower field number. */
+UBII_API const char *ubii_record_type_name(ubii_record_type type);
+UBII_API const char *ubii_record_type_format(ubii_record_type type);
+UBII_API ubii_record_type ubii_record_type_for_format(const char *format);
+
 typedef uint32_t ubii_subscription;
 
 typedef void (*ubii_record_fn)(ubii_node *node, const ubii_record *record, void *user);
@@ -140,6 +149,13 @@ UBII_API ubii_status ubii_publish_pose3d(ubii_node *node, const char *topic,
  */
 UBII_API ubii_status ubii_publish_message(ubii_node *node, const char *topic, ubii_record_type type,
                                           const pb_msgdesc_t *fields, const void *message);
+
+/* A length-delimited member (a message-typed one, or UBII_RECORD_STRING) whose encoded bytes the
+ * caller has already, e.g. from another protobuf runtime: `bytes` are the member's payload (a
+ * message's fields, without tag and length), copied at once. UBII_ERR_INVALID_ARGUMENT for a
+ * scalar or unknown member; the bytes themselves are not checked. */
+UBII_API ubii_status ubii_publish_encoded(ubii_node *node, const char *topic, ubii_record_type type,
+                                          const uint8_t *bytes, size_t size);
 
 #ifdef __cplusplus
 }

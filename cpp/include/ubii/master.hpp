@@ -1,0 +1,115 @@
+#ifndef UBII_MASTER_HPP
+#define UBII_MASTER_HPP
+
+// Typed calls of the services a master offers (PROTOCOL.md §2.11), through a node:
+//
+//     ubii::Server server = node.wait(node.master().server_configuration(), 2s);
+//     auto device = node.wait(node.master().register_device(my_device), 2s);
+//     auto sessions = node.wait(node.sessions().list(), 2s);
+//
+// Each returns a ubii::Call resolved inside poll(); the master's error reply resolves it with
+// ubii::ServiceError (title and message as the master wrote them), no reply with ubii::Timeout.
+// `timeout` 0: NodeOptions::service_timeout. Master and Sessions are cheap views of the node; they
+// must not outlive it.
+
+#include <chrono>
+#include <string>
+
+#include "ubii/messages.hpp"
+#include "ubii/service_call.hpp"
+
+namespace ubii
+{
+
+class Node;
+
+// The services' topics (PROTOCOL.md §2.11).
+namespace service_topics
+{
+inline constexpr const char server_configuration[] = "/services/server_configuration";
+inline constexpr const char service_list[] = "/services/service_list";
+inline constexpr const char topic_list[] = "/services/topic_list";
+inline constexpr const char client_list[] = "/services/client/get_list";
+inline constexpr const char device_registration[] = "/services/device/registration";
+inline constexpr const char device_deregistration[] = "/services/device/deregistration";
+inline constexpr const char device_list[] = "/services/device/get_list";
+inline constexpr const char component_list[] = "/services/component/get_list";
+inline constexpr const char processing_module_list[] =
+    "/services/processing_module/database/get_list";
+inline constexpr const char session_start[] = "/services/session/runtime/start";
+inline constexpr const char session_stop[] = "/services/session/runtime/stop";
+inline constexpr const char session_get[] = "/services/session/runtime/get";
+inline constexpr const char session_list[] = "/services/session/runtime/get_list";
+inline constexpr const char session_save[] = "/services/session/database/save";
+} // namespace service_topics
+
+class Master
+{
+  public:
+    explicit Master(Node &node, std::chrono::milliseconds timeout = std::chrono::milliseconds(0))
+        : node_(node), timeout_(timeout)
+    {
+    }
+    // The same calls with another timeout.
+    Master with_timeout(std::chrono::milliseconds timeout) const
+    {
+        return Master(node_, timeout);
+    }
+
+    Call<Server> server_configuration();
+    Call<ServiceList> services();
+    // Every service topic, then every topic holding data.
+    Call<StringList> topics();
+    // The clients the master knows (filter: the elements to match; the npm 0.4.0 master has no
+    // such service and replies with an error).
+    Call<ClientList> clients(const ClientList &filter = {});
+    Call<DeviceList> devices(const DeviceList &filter = {});
+    Call<devices::ComponentList> components(const devices::ComponentList &filter = {});
+    // Registers `device` for this client (client_id is filled in); the reply carries the ids the
+    // master assigned to it and its components.
+    Call<Device> register_device(Device device);
+    // Deregisters the device with `device_id` of this client.
+    Call<Success> deregister_device(const std::string &device_id);
+    // The processing module specs the master knows (its database and every client's).
+    Call<ProcessingModuleList> processing_modules(const ProcessingModuleList &filter = {});
+
+  private:
+    template <class T> Call<T> call(ServiceRequest request);
+    Node &node_;
+    std::chrono::milliseconds timeout_;
+};
+
+class Sessions
+{
+  public:
+    explicit Sessions(Node &node, std::chrono::milliseconds timeout = std::chrono::milliseconds(0))
+        : node_(node), timeout_(timeout)
+    {
+    }
+    Sessions with_timeout(std::chrono::milliseconds timeout) const
+    {
+        return Sessions(node_, timeout);
+    }
+
+    // The sessions the master runs.
+    Call<SessionList> list();
+    Call<Session> get(const std::string &id);
+    // Starts a session from its spec (or, by name, one the master has stored); the reply is the
+    // session as the master runs it, with the id it assigned.
+    Call<Session> start(Session session);
+    // Stops the session with `id`. The npm 0.4.0 master replies success, or an error if no such
+    // session runs; the current master always replies with an error (SESSIONS.md §1.3), which
+    // the call passes on as ServiceError.
+    Call<Success> stop(const std::string &id);
+    // Saves a session spec in the master's database; the reply lists the sessions it created.
+    Call<SessionList> save(Session session);
+
+  private:
+    template <class T> Call<T> call(ServiceRequest request);
+    Node &node_;
+    std::chrono::milliseconds timeout_;
+};
+
+} // namespace ubii
+
+#endif

@@ -1,0 +1,421 @@
+#include "node_core.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+namespace ubii::detail
+{
+
+namespace
+{
+
+ConnectionState from_core(ubii_state state) noexcept
+{
+    switch (state) {
+    case UBII_STATE_STOPPED:
+        return ConnectionState::stopped;
+    case UBII_STATE_CONNECTING:
+        return ConnectionState::connecting;
+    case UBII_STATE_REGISTERING:
+        return ConnectionState::registering;
+    case UBII_STATE_OPENING:
+        return ConnectionState::opening;
+    case UBII_STATE_READY:
+        return ConnectionState::preparing; // ready once the hooks on preparing have settled
+    case UBII_STATE_RECONNECTING:
+        return ConnectionState::reconnecting;
+    case UBII_STATE_STOPPING:
+        return ConnectionState::stopping;
+    case UBII_STATE_FAILED:
+        return ConnectionState::failed;
+    }
+    return ConnectionState::failed;
+}
+
+// The transitions the core makes, with `preparing` between its READY and the node's ready.
+std::vector<std::pair<ConnectionState, ConnectionState>> connection_transitions()
+{
+    using S = ConnectionState;
+    std::vector<std::pair<S, S>> allowed = {
+        {S::stopped, S::connecting},   {S::failed, S::connecting},    {S::failed, S::stopped},
+        {S::connecting, S::registering}, {S::registering, S::opening}, {S::opening, S::preparing},
+        {S::preparing, S::ready},      {S::reconnecting, S::connecting}, {S::stopping, S::stopped},
+    };
+    for (S from : {S::connecting, S::registering, S::opening, S::preparing, S::ready}) {
+        for (S to : {S::reconnecting, S::stopping, S::stopped, S::failed})
+            allowed.emplace_back(from, to);
+    }
+    for (S to : {S::stopping, S::stopped, S::failed})
+        allowed.emplace_back(S::reconnecting, to);
+    return allowed;
+}
+
+std::uint32_t milliseconds_u32(std::chrono::milliseconds value)
+{
+    const auto count = value.count();
+    if (count <= 0)
+        return 0;
+    return count > std::numeric_limits<std::uint32_t>::max()
+               ? std::numeric_limits<std::uint32_t>::max()
+               : static_cast<std::uint32_t>(count);
+}
+
+int milliseconds_int(std::chrono::milliseconds value)
+{
+    const auto count = value.count();
+    if (count <= 0)
+        return 0;
+    return count > std::numeric_limits<int>::max() ? std::numeric_limits<int>::max()
+                                                   : static_cast<int>(count);
+}
+
+} // namespace
+
+template <class F> void NodeCore::guard(const std::string &where, F &&code) noexcept
+{
+    try {
+        code();
+    } catch (...) {
+        report_exception(where, std::current_exception());
+    }
+}
+
+NodeCore::NodeCore(NodeOptions options, const ubii_port *port)
+    : options_(std::move(options)),
+      protocol_("connection", ConnectionState::stopped, connection_transitions(),
+                [](ConnectionState state) { return to_string(state); })
+{
+    if (port != nullptr) {
+        port_ = *port;
+    } else {
+        owned_port_ = std::make_unique<LinuxPortOwner>(options_);
+        port_ = owned_port_->port();
+    }
+    ubii_config config;
+    ubii_config_init(&config);
+    config.service_url = options_.service_url.c_str();
+    config.topic_url = options_.topic_url.empty() ? nullptr : options_.topic_url.c_str();
+    config.client_name = options_.name.c_str();
+    config.is_dedicated_processing_node = options_.is_dedicated_processing_node;
+    config.service_timeout_ms = milliseconds_u32(options_.service_timeout);
+    config.ping_timeout_ms = milliseconds_u32(options_.ping_timeout);
+    config.reconnect_min_ms = milliseconds_u32(options_.reconnect.first_delay);
+    config.reconnect_max_ms = milliseconds_u32(options_.reconnect.max_delay);
+    config.max_reconnect_attempts = options_.reconnect.max_attempts;
+    config.stamp_records = options_.stamp_records;
+    config.on_state = &NodeCore::on_state;
+    config.on_state_user = this;
+    config.on_error = &NodeCore::on_error;
+    config.on_error_user = this;
+    node_ = std::make_unique<ubii_node>();
+    check(ubii_node_init(node_.get(), sizeof(ubii_node), &config, port_),
+          "cannot set the node up (service URL \"" + options_.service_url + "\", name \"" +
+              options_.name + "\")");
+    protocol_.on_every_transition([this](ConnectionTransition &transition) {
+        if (state_handler_)
+            state_handler_(transition.from(), transition.to(), last_reason_);
+    });
+    protocol_.set_error_handler(
+        [this](std::exception_ptr error, const ConnectionTransition &transition) {
+            report_exception("a hook on " + std::string(to_string(transition.from())) + " -> " +
+                                 std::string(to_string(transition.to())),
+                             std::move(error));
+        });
+}
+
+NodeCore::~NodeCore()
+{
+    // The application's handlers may refer to objects already gone: none of them runs from here.
+    destroying_ = true;
+    state_handler_ = nullptr;
+    error_handler_ = nullptr;
+    waiting_.clear();
+    if (ubii_node_state(node_.get()) != UBII_STATE_STOPPED)
+        ubii_node_stop_wait(node_.get(), milliseconds_int(options_.stop_timeout));
+    // The port (owned_port_) is destroyed after the node is stopped: members go in reverse order.
+}
+
+std::string NodeCore::transport_error() const
+{
+    return owned_port_ ? owned_port_->last_error() : std::string();
+}
+
+void NodeCore::start()
+{
+    const ubii_status status = ubii_node_start(node_.get());
+    if (status != UBII_OK)
+        throw_status(to_status(status), "cannot start the node for " + options_.service_url +
+                                            (options_.topic_url.empty() ? std::string()
+                                                                        : " / " + options_.topic_url));
+}
+
+void NodeCore::poll(std::chrono::milliseconds timeout)
+{
+    if (poll_depth_ > 0)
+        throw StateError("ubii::Node::poll called from inside one of the node's callbacks");
+    ++poll_depth_;
+    const ubii_status status = ubii_node_poll(node_.get(), milliseconds_int(timeout));
+    after_poll();
+    --poll_depth_;
+    if (status != UBII_OK)
+        throw_status(to_status(status), "ubii_node_poll");
+}
+
+bool NodeCore::stop_wait(std::chrono::milliseconds timeout)
+{
+    if (poll_depth_ > 0)
+        throw StateError("ubii::Node::stop_wait called from inside one of the node's callbacks");
+    ++poll_depth_;
+    const ubii_status status = ubii_node_stop_wait(node_.get(), milliseconds_int(timeout));
+    after_poll();
+    --poll_depth_;
+    return status == UBII_OK;
+}
+
+void NodeCore::after_poll()
+{
+    settle();
+    if (!waiting_.empty()) {
+        std::vector<std::pair<Behaviour, std::function<void()>>> due;
+        auto usable_now = [this](const auto &entry) { return usable(entry.first); };
+        std::copy_if(waiting_.begin(), waiting_.end(), std::back_inserter(due), usable_now);
+        waiting_.erase(std::remove_if(waiting_.begin(), waiting_.end(), usable_now),
+                       waiting_.end());
+        for (auto &entry : due)
+            guard("when_usable(" + std::string(to_string(entry.first)) + ")", entry.second);
+    }
+    retired_.clear();
+}
+
+void NodeCore::settle()
+{
+    if (protocol_.state() == ConnectionState::preparing && protocol_.settled() &&
+        ubii_node_state(node_.get()) == UBII_STATE_READY) {
+        last_reason_ = Status::ok;
+        protocol_.transition(ConnectionState::ready);
+    }
+}
+
+void NodeCore::mirror(ubii_state current, ubii_status reason)
+{
+    const ConnectionState previous = protocol_.state();
+    const ConnectionState next = from_core(current);
+    if (next == previous)
+        return;
+    last_reason_ = to_status(reason);
+    if (protocol_.allows(previous, next)) {
+        protocol_.transition(next);
+    } else {
+        report(Status::state, "the core went from " + std::string(to_string(previous)) + " to " +
+                                  std::string(to_string(next)) +
+                                  ", which the connection protocol does not list");
+        protocol_.force(next);
+    }
+    settle();
+}
+
+void NodeCore::on_state(ubii_node *, ubii_state, ubii_state current, ubii_status reason,
+                        void *user)
+{
+    auto *core = static_cast<NodeCore *>(user);
+    if (core->destroying_)
+        return;
+    core->guard("the connection protocol", [&] { core->mirror(current, reason); });
+}
+
+void NodeCore::on_error(ubii_node *, ubii_status status, const char *detail, void *user)
+{
+    static_cast<NodeCore *>(user)->report(to_status(status), detail != nullptr ? detail : "");
+}
+
+void NodeCore::on_record(ubii_node *, const ubii_record *record, void *user)
+{
+    auto *handler = static_cast<Handler *>(user);
+    if (!handler->active || handler->core->destroying_)
+        return;
+    const Record lent = Record::lend(*record);
+    handler->core->guard("the subscription to " + handler->pattern,
+                         [&] { handler->fn(lent); });
+}
+
+void NodeCore::on_reply(ubii_node *, const ubii_reply *reply, void *user)
+{
+    auto *pending = static_cast<PendingCall *>(user);
+    NodeCore *core = pending->core;
+    auto owned = core->calls_.find(pending);
+    if (owned == core->calls_.end())
+        return;
+    std::unique_ptr<PendingCall> call = std::move(owned->second);
+    core->calls_.erase(owned);
+    if (core->destroying_)
+        return; // documented: calls pending when the node is destroyed stay unresolved
+
+    std::optional<Result<ServiceReply>> outcome;
+    try {
+        switch (reply->status) {
+        case UBII_OK: {
+            ServiceReply parsed;
+            const auto *member = ServiceReply::descriptor()->FindFieldByNumber(
+                static_cast<int>(reply->member));
+            if (member == nullptr || member->message_type() == nullptr)
+                throw UnexpectedReply(call->service + ": the reply's member " +
+                                      std::to_string(reply->member) + " is not in the schema");
+            auto *message = parsed.GetReflection()->MutableMessage(&parsed, member);
+            if (reply->size > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
+                !message->ParseFromArray(reply->bytes, static_cast<int>(reply->size)))
+                throw DecodeError(call->service + ": the reply's " + member->name() +
+                                  " is not valid protobuf");
+            outcome.emplace(Result<ServiceReply>::success(std::move(parsed)));
+            break;
+        }
+        case UBII_ERR_BROKER:
+            throw ServiceError(call->service, reply->error_title, reply->error_message);
+        case UBII_ERR_TIMEOUT:
+            throw Timeout(call->service + ": no reply within " +
+                          std::to_string(call->timeout.count() > 0
+                                             ? call->timeout.count()
+                                             : core->options_.service_timeout.count()) +
+                          " ms");
+        case UBII_ERR_CANCELLED:
+            throw Cancelled(call->service +
+                            ": cancelled (the node stopped or lost its connection)");
+        default:
+            throw_status(to_status(reply->status), call->service);
+        }
+    } catch (...) {
+        outcome.emplace(Result<ServiceReply>::failure(std::current_exception()));
+    }
+    core->guard("the reply of " + call->service, [&] { call->resolve(std::move(*outcome)); });
+}
+
+std::uint64_t NodeCore::subscribe(std::string pattern, bool regex, Node::RecordHandler fn)
+{
+    if (!fn)
+        throw InvalidArgument("subscribe(" + pattern + "): no handler");
+    auto handler = std::make_unique<Handler>();
+    handler->core = this;
+    handler->id = ++next_handler_id_;
+    handler->fn = std::move(fn);
+    handler->pattern = pattern;
+    const ubii_status status =
+        regex ? ubii_subscribe_regex(node_.get(), pattern.c_str(), &NodeCore::on_record,
+                                     handler.get(), &handler->c_handle)
+              : ubii_subscribe(node_.get(), pattern.c_str(), &NodeCore::on_record, handler.get(),
+                               &handler->c_handle);
+    if (status != UBII_OK)
+        throw_status(to_status(status),
+                     std::string(regex ? "subscribe_regex(" : "subscribe(") + pattern + ")");
+    const std::uint64_t id = handler->id;
+    handlers_.emplace(id, std::move(handler));
+    return id;
+}
+
+void NodeCore::unsubscribe(std::uint64_t id) noexcept
+{
+    auto found = handlers_.find(id);
+    if (found == handlers_.end())
+        return;
+    std::unique_ptr<Handler> handler = std::move(found->second);
+    handlers_.erase(found);
+    handler->active = false;
+    ubii_unsubscribe(node_.get(), handler->c_handle);
+    // Its callback may be running right now: freed after the poll.
+    if (poll_depth_ > 0) {
+        try {
+            retired_.push_back(std::move(handler));
+        } catch (...) {
+            handler.release(); // NOLINT: leaking one handler beats freeing it under its caller
+        }
+    }
+}
+
+bool NodeCore::subscribed(std::uint64_t id) const noexcept
+{
+    return handlers_.count(id) != 0;
+}
+
+void NodeCore::queue_call(const ServiceRequest &request, std::chrono::milliseconds timeout,
+                          std::function<void(Result<ServiceReply>)> resolve)
+{
+    std::string bytes;
+    if (!request.SerializeToString(&bytes))
+        throw EncodeError(request.topic() + ": the request cannot be encoded");
+    auto pending = std::make_unique<PendingCall>();
+    pending->core = this;
+    pending->service = request.topic();
+    pending->timeout = timeout;
+    pending->resolve = std::move(resolve);
+    const ubii_status status = ubii_call_encoded(
+        node_.get(), reinterpret_cast<const std::uint8_t *>(bytes.data()), bytes.size(),
+        milliseconds_u32(timeout), &NodeCore::on_reply, pending.get());
+    if (status != UBII_OK)
+        throw_status(to_status(status), "cannot call " + request.topic());
+    const PendingCall *key = pending.get();
+    calls_.emplace(key, std::move(pending));
+}
+
+bool NodeCore::usable(Behaviour behaviour) const noexcept
+{
+    return behaviour != Behaviour::processing_modules && state() == ConnectionState::ready;
+}
+
+void NodeCore::when_usable(Behaviour behaviour, std::function<void()> action)
+{
+    if (behaviour == Behaviour::processing_modules)
+        throw Unsupported("ubii::Node does not implement the processing_modules behaviour");
+    waiting_.emplace_back(behaviour, std::move(action));
+}
+
+Stats NodeCore::stats() const noexcept
+{
+    ubii_stats core = {};
+    ubii_node_stats(node_.get(), &core);
+    Stats stats;
+    stats.records_received = core.records_received;
+    stats.records_published = core.records_published;
+    stats.duplicates_dropped = core.duplicates_dropped;
+    stats.pings = core.pings;
+    stats.decode_errors = core.decode_errors;
+    stats.master_errors = core.master_errors;
+    stats.service_timeouts = core.service_timeouts;
+    stats.reconnects = core.reconnects;
+    stats.records_skipped = core.records_skipped;
+    stats.callback_errors = callback_errors_;
+    stats.type_mismatches = type_mismatches_;
+    return stats;
+}
+
+void NodeCore::report_exception(const std::string &where, std::exception_ptr error) noexcept
+{
+    ++callback_errors_;
+    Status status = Status::callback_threw;
+    std::string what = "unknown exception";
+    try {
+        std::rethrow_exception(error);
+    } catch (const WrongType &e) {
+        ++type_mismatches_;
+        status = Status::wrong_type;
+        what = e.what();
+    } catch (const std::exception &e) {
+        what = e.what();
+    } catch (...) {
+    }
+    try {
+        report(status, where + ": " + what);
+    } catch (...) {
+    }
+}
+
+void NodeCore::report(Status status, const std::string &detail) noexcept
+{
+    if (!error_handler_ || destroying_)
+        return;
+    try {
+        error_handler_(status, detail);
+    } catch (...) {
+        ++callback_errors_; // an error handler that throws has nowhere left to report to
+    }
+}
+
+} // namespace ubii::detail

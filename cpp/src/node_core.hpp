@@ -1,0 +1,128 @@
+#ifndef UBII_CPP_NODE_CORE_HPP
+#define UBII_CPP_NODE_CORE_HPP
+
+// What a ubii::Node owns: the C node, its port, the handlers the C callbacks lead to, and the
+// connection protocol. Shared with Subscription handles (weakly), so that a handle outliving its
+// node is harmless. Every C callback enters here, and no exception leaves.
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "linux_port_owner.hpp"
+#include "ubii/node.hpp"
+#include "ubii/ubii.h"
+
+namespace ubii::detail
+{
+
+class NodeCore
+{
+  public:
+    NodeCore(NodeOptions options, const ubii_port *port);
+    ~NodeCore();
+    NodeCore(const NodeCore &) = delete;
+    NodeCore &operator=(const NodeCore &) = delete;
+
+    struct Handler {
+        NodeCore *core;
+        std::uint64_t id;
+        Node::RecordHandler fn;
+        ubii_subscription c_handle = 0;
+        bool active = true;
+        std::string pattern;
+    };
+    struct PendingCall {
+        NodeCore *core;
+        std::string service;
+        std::chrono::milliseconds timeout;
+        std::function<void(Result<ServiceReply>)> resolve;
+    };
+
+    void start();
+    void poll(std::chrono::milliseconds timeout);
+    bool stop_wait(std::chrono::milliseconds timeout);
+    ConnectionState state() const noexcept
+    {
+        return protocol_.state();
+    }
+    ubii_node *c_node() noexcept
+    {
+        return node_.get();
+    }
+    std::string transport_error() const;
+
+    std::uint64_t subscribe(std::string pattern, bool regex, Node::RecordHandler fn);
+    void unsubscribe(std::uint64_t id) noexcept;
+    bool subscribed(std::uint64_t id) const noexcept;
+
+    std::string &encode_buffer() noexcept
+    {
+        return encode_buffer_;
+    }
+    void queue_call(const ServiceRequest &request, std::chrono::milliseconds timeout,
+                    std::function<void(Result<ServiceReply>)> resolve);
+
+    void when_usable(Behaviour behaviour, std::function<void()> action);
+    bool usable(Behaviour behaviour) const noexcept;
+
+    ConnectionProtocol &protocol() noexcept
+    {
+        return protocol_;
+    }
+    const NodeOptions &options() const noexcept
+    {
+        return options_;
+    }
+    void set_state_handler(Node::StateHandler handler)
+    {
+        state_handler_ = std::move(handler);
+    }
+    void set_error_handler(Node::ErrorHandler handler)
+    {
+        error_handler_ = std::move(handler);
+    }
+    Stats stats() const noexcept;
+
+    // Runs the application's `code`; an exception becomes an error event naming `where`.
+    template <class F> void guard(const std::string &where, F &&code) noexcept;
+    void report(Status status, const std::string &detail) noexcept;
+
+  private:
+    static void on_state(ubii_node *, ubii_state previous, ubii_state current, ubii_status reason,
+                         void *user);
+    static void on_error(ubii_node *, ubii_status status, const char *detail, void *user);
+    static void on_record(ubii_node *, const ubii_record *record, void *user);
+    static void on_reply(ubii_node *, const ubii_reply *reply, void *user);
+    void mirror(ubii_state current, ubii_status reason);
+    void settle();
+    void after_poll();
+    void report_exception(const std::string &where, std::exception_ptr error) noexcept;
+
+    NodeOptions options_;
+    std::unique_ptr<LinuxPortOwner> owned_port_;
+    ubii_port port_{};
+    std::unique_ptr<ubii_node> node_;
+    ConnectionProtocol protocol_;
+    Status last_reason_ = Status::ok;
+    Node::StateHandler state_handler_;
+    Node::ErrorHandler error_handler_;
+    std::map<std::uint64_t, std::unique_ptr<Handler>> handlers_;
+    std::vector<std::unique_ptr<Handler>> retired_; // cancelled while their callback may run
+    std::uint64_t next_handler_id_ = 0;
+    std::map<const PendingCall *, std::unique_ptr<PendingCall>> calls_;
+    std::vector<std::pair<Behaviour, std::function<void()>>> waiting_;
+    std::string encode_buffer_;
+    std::uint64_t callback_errors_ = 0;
+    std::uint64_t type_mismatches_ = 0;
+    int poll_depth_ = 0;
+    bool destroying_ = false;
+};
+
+} // namespace ubii::detail
+
+#endif
