@@ -637,3 +637,91 @@ TEST_F(NodeWithFakeMaster, WhileStoppingPingsAreAnsweredAndRecordsNotPassedOn)
 }
 
 } // namespace
+
+namespace
+{
+
+// ubii_publish_encoded: a member encoded by another protobuf runtime goes out byte for byte as the
+// nanopb path would write it.
+TEST_F(NodeWithFakeMaster, EncodedMembersPublishLikeTheirNanopbTwins)
+{
+    start_ready();
+    ubii_dataStructure_Vector3 vector = {1.5, -2, 3};
+    ASSERT_EQ(ubii_publish_vector3(&node, "/v", &vector), UBII_OK);
+    // Vector3{x 1.5, y -2, z 3}: three fixed64 fields.
+    const std::vector<uint8_t> body = {0x09, 0, 0, 0, 0, 0, 0, 0xf8, 0x3f, 0x11, 0, 0, 0, 0,
+                                       0,    0, 0, 0xc0, 0x19, 0, 0, 0, 0, 0, 0, 0x08, 0x40};
+    ASSERT_EQ(ubii_publish_encoded(&node, "/v", UBII_RECORD_VECTOR3, body.data(), body.size()),
+              UBII_OK);
+    ASSERT_EQ(fake.topic_sent.size(), 2u);
+    EXPECT_EQ(fake.topic_sent[0].bytes, fake.topic_sent[1].bytes);
+}
+
+TEST_F(NodeWithFakeMaster, EncodedPublishRefusesScalarAndUnknownMembers)
+{
+    start_ready();
+    const uint8_t byte = 1;
+    EXPECT_EQ(ubii_publish_encoded(&node, "/x", UBII_RECORD_DOUBLE, &byte, 1),
+              UBII_ERR_INVALID_ARGUMENT);
+    // 33 is TopicDataRecord.client_id, not a value member.
+    EXPECT_EQ(ubii_publish_encoded(&node, "/x", static_cast<ubii_record_type>(33), &byte, 1),
+              UBII_ERR_INVALID_ARGUMENT);
+    EXPECT_EQ(ubii_publish_encoded(&node, "/x", UBII_RECORD_VECTOR3, nullptr, 1),
+              UBII_ERR_INVALID_ARGUMENT);
+    EXPECT_TRUE(fake.topic_sent.empty());
+}
+
+// ubii_call_encoded: the bytes reach the master as given and the reply comes back as for
+// ubii_call; bytes the master could not route are refused before they are queued.
+TEST_F(NodeWithFakeMaster, EncodedCallsAreSentAsGivenAndAnswered)
+{
+    start_ready();
+    const size_t before = fake.requests.size();
+    // ServiceRequest{topic "/services/other"}
+    const std::string topic = "/services/other";
+    std::vector<uint8_t> request = {0x0a, static_cast<uint8_t>(topic.size())};
+    request.insert(request.end(), topic.begin(), topic.end());
+    Reply reply;
+    ASSERT_EQ(ubii_call_encoded(&node, request.data(), request.size(), 0, Reply::on_reply, &reply),
+              UBII_OK);
+    poll(2);
+    ASSERT_EQ(fake.requests.size(), before + 1);
+    EXPECT_EQ(std::string(fake.requests.back().topic), topic);
+    ASSERT_TRUE(reply.done);
+    EXPECT_EQ(reply.status, UBII_ERR_BROKER);
+    EXPECT_EQ(reply.message, "unknown topic: /services/other");
+
+    const uint8_t truncated[] = {0x0a, 0x05, '/', 'a'};
+    EXPECT_EQ(ubii_call_encoded(&node, truncated, sizeof truncated, 0, nullptr, nullptr),
+              UBII_ERR_INVALID_ARGUMENT);
+    const uint8_t no_topic[] = {0x12, 0x00}; // an empty client, no topic
+    EXPECT_EQ(ubii_call_encoded(&node, no_topic, sizeof no_topic, 0, nullptr, nullptr),
+              UBII_ERR_INVALID_ARGUMENT);
+    std::vector<uint8_t> oversized(UBII_SERVICE_QUEUE_BYTES + 16, 0);
+    oversized[0] = 0x0a;
+    oversized[1] = 0x01;
+    oversized[2] = '/';
+    oversized[3] = 0x22; // a topic_subscription member filling the rest
+    size_t rest = oversized.size() - 6;
+    oversized[4] = static_cast<uint8_t>(0x80 | (rest & 0x7f));
+    oversized[5] = static_cast<uint8_t>(rest >> 7);
+    EXPECT_EQ(ubii_call_encoded(&node, oversized.data(), oversized.size(), 0, nullptr, nullptr),
+              UBII_ERR_TOO_LARGE);
+}
+
+TEST(RecordTypeTable, NamesAndFormatsComeFromTheSchema)
+{
+    EXPECT_STREQ(ubii_record_type_name(UBII_RECORD_VECTOR3), "vector3");
+    EXPECT_STREQ(ubii_record_type_format(UBII_RECORD_VECTOR3), "ubii.dataStructure.Vector3");
+    EXPECT_STREQ(ubii_record_type_format(UBII_RECORD_DOUBLE), "double");
+    EXPECT_STREQ(ubii_record_type_name(UBII_RECORD_OBJECT2D_LIST), "object2D_list");
+    EXPECT_EQ(ubii_record_type_for_format("ubii.dataStructure.Object2DList"),
+              UBII_RECORD_OBJECT2D_LIST);
+    // Two members hold a Quaternion (upstream's quaternion_list quirk): the lower number wins.
+    EXPECT_EQ(ubii_record_type_for_format("ubii.dataStructure.Quaternion"), UBII_RECORD_QUATERNION);
+    EXPECT_EQ(ubii_record_type_for_format("ubii.dataStructure.NoSuchThing"), UBII_RECORD_NONE);
+    EXPECT_EQ(ubii_record_type_for_format(nullptr), UBII_RECORD_NONE);
+    EXPECT_EQ(ubii_record_type_name(UBII_RECORD_NONE), nullptr);
+}
+
+} // namespace
