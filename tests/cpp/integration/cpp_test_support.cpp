@@ -231,6 +231,10 @@ ubii_status CountingPort::receive(void *port, ubii_channel channel, const std::u
     if (status == UBII_OK && channel == UBII_CHANNEL_TOPIC &&
         !(*size == 4 && std::memcmp(*data, "PING", 4) == 0))
         ++self->topic_messages_;
+    if (status == UBII_OK && channel == UBII_CHANNEL_SERVICE && self->replies_to_lose_ > 0) {
+        --self->replies_to_lose_;
+        return UBII_ERR_WOULD_BLOCK;
+    }
     return status;
 }
 

@@ -31,7 +31,8 @@ ubii::Value value_for(ubii::RecordType type, int seed);
 bool same_value(const ubii::Value &a, const ubii::Value &b, std::string *difference = nullptr);
 
 // A Linux port that counts the records (not PINGs) the master sends on the topic channel, to see
-// what the master forwards whether or not a subscription takes it.
+// what the master forwards whether or not a subscription takes it; and that can lose service
+// replies, to see a node time out against a master that did answer.
 class CountingPort
 {
   public:
@@ -45,6 +46,11 @@ class CountingPort
     {
         return inner_port_;
     }
+    // The next `count` service replies are dropped on arrival.
+    void lose_service_replies(int count)
+    {
+        replies_to_lose_ = count;
+    }
 
   private:
     static ubii_status receive(void *port, ubii_channel channel, const std::uint8_t **data,
@@ -53,6 +59,7 @@ class CountingPort
     ubii_port inner_port_{};
     ubii_port_vtable vtable_{};
     std::uint64_t topic_messages_ = 0;
+    int replies_to_lose_ = 0;
 };
 
 } // namespace ubii_cpp_test
