@@ -8,7 +8,7 @@
 //     auto sub = node.subscribe<ubii::Vector3>("/hand", [](const ubii::Vector3 &v,
 //                                                          const ubii::RecordInfo &info) { ... });
 //     node.publish("/speed", 1.5);
-//     const ubii::Server &server = node.wait(node.master().server_configuration(), 2s);
+//     ubii::Server server = node.wait(node.master().server_configuration(), 2s);
 //     for (;;) node.poll(16ms);                   // or poll(0ms) from a frame tick
 //
 // Single-threaded like the core: nothing happens and no callback runs except inside poll() (and
@@ -258,8 +258,9 @@ class Node
     Call<T> call_as(const ServiceRequest &request,
                     std::chrono::milliseconds timeout = std::chrono::milliseconds(0));
     // Polls until `call` is done: its reply, or its error as an exception; ubii::Timeout if it is
-    // not done within `timeout` (the call stays pending).
-    template <class T> const T &wait(const Call<T> &call, std::chrono::milliseconds timeout)
+    // not done within `timeout` (the call stays pending). The reply is a copy: it outlives the
+    // Call, which is often a temporary (`auto topics = node.wait(node.master().topics(), 2s);`).
+    template <class T> T wait(const Call<T> &call, std::chrono::milliseconds timeout)
     {
         if (!run_until([&call] { return call.done(); }, timeout))
             throw Timeout("no reply from " + call.service() + " within " +
