@@ -2,10 +2,21 @@
 # Installs the build tree BUILD_DIR into WORK/prefix, then builds and runs the consumer application
 # against it three ways: find_package with the static library, with the shared library, and
 # pkg-config.
-#   check_install.sh BUILD_DIR WORK [ocr]      (ocr: the build has the OCR pipelines; use them too)
+#   check_install.sh BUILD_DIR WORK [ocr] [cpp]   (ocr: the build has the OCR pipelines, cpp: the
+#                                                 C++ layer; use them too, cpp also via pkg-config)
 set -euo pipefail
 # grep reads its whole input (no -q): an early exit would fail the writer with SIGPIPE under pipefail.
-build=${1:?} work=${2:?} ocr=${3:-}
+build=${1:?} work=${2:?}
+shift 2
+ocr= cpp=
+for part in "$@"; do
+  case $part in
+    ocr) ocr=ocr ;;
+    cpp) cpp=cpp ;;
+    "") ;; # a part the build does not have
+    *) echo "check_install: unknown part $part" >&2; exit 2 ;;
+  esac
+done
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work"
 mkdir -p "$work"
@@ -15,8 +26,10 @@ cmake --install "$build" --prefix "$prefix" >"$work/install.log"
 
 consumer_ocr=OFF
 [ "$ocr" = ocr ] && consumer_ocr=ON
+consumer_cpp=OFF
+[ "$cpp" = cpp ] && consumer_cpp=ON
 cmake -S "$here" -B "$work/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" \
-  -DUBII_CONSUMER_OCR=$consumer_ocr >"$work/configure.log"
+  -DUBII_CONSUMER_OCR=$consumer_ocr -DUBII_CONSUMER_CPP=$consumer_cpp >"$work/configure.log"
 cmake --build "$work/cmake-build" >"$work/build.log"
 "$work/cmake-build/consumer_static"
 if nm -D "$work/cmake-build/consumer_static" 2>/dev/null | grep ubii_ >/dev/null; then
@@ -36,4 +49,14 @@ LD_LIBRARY_PATH="$libdir" "$work/consumer_pkgconfig"
 if [ "$consumer_ocr" = ON ]; then
   OMP_THREAD_LIMIT=1 "$work/cmake-build/consumer_ocr"
 fi
-echo "check_install: find_package (static, shared$([ "$consumer_ocr" = ON ] && echo ", ocr")) and pkg-config consumers work"
+if [ "$consumer_cpp" = ON ]; then
+  "$work/cmake-build/consumer_cpp"
+  cpp_flags=$(PKG_CONFIG_PATH="$libdir/pkgconfig" pkg-config --cflags --libs ubii-cpp)
+  # Sanitized builds put the sanitizer runtimes into ubii.pc's Libs already.
+  c++ -Wall -Werror "$here/consumer_cpp.cpp" $cpp_flags -o "$work/consumer_cpp_pkgconfig"
+  LD_LIBRARY_PATH="$libdir" "$work/consumer_cpp_pkgconfig"
+fi
+parts="static, shared"
+[ "$consumer_ocr" = ON ] && parts="$parts, ocr"
+[ "$consumer_cpp" = ON ] && parts="$parts, cpp"
+echo "check_install: find_package ($parts) and pkg-config consumers work"
