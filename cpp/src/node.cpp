@@ -148,7 +148,7 @@ void Node::connect(std::chrono::milliseconds timeout)
         [this] { return ready() || state() == ConnectionState::failed; }, timeout);
     if (ready())
         return;
-    const std::string transport = core_->transport_error();
+    const std::string transport = transport_error();
     const std::string where = options().service_url +
                               (options().topic_url.empty() ? "" : " / " + options().topic_url);
     const std::string detail = " (node " + std::string(to_string(state())) +
@@ -203,6 +203,11 @@ ConnectionState Node::state() const noexcept
 std::string Node::client_id() const
 {
     return ubii_node_client_id(core_->c_node());
+}
+
+std::string Node::transport_error() const
+{
+    return core_->transport_error();
 }
 
 ConnectionProtocol &Node::connection() noexcept

@@ -167,6 +167,9 @@ class Node
     }
     // The id the master gave this client ("" until registered).
     std::string client_id() const;
+    // The Linux port's last transport failure, e.g. why a connection was refused ("" if none, or
+    // if the node runs on a port of the application's).
+    std::string transport_error() const;
     // The connection lifecycle as a protocol: hook its transitions, e.g. hold `preparing` open
     // until devices are registered. Hooks run inside poll(), on every (re)connection.
     ConnectionProtocol &connection() noexcept;

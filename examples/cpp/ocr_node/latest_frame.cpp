@@ -11,25 +11,24 @@ ubii_image_view Frame::view() const
     return ubii_image_view{width, height, format, has_data ? data.data() : nullptr, data.size()};
 }
 
-void LatestFrame::on_record(ubii_node *, const ubii_record *record, void *user) noexcept
-{
-    if (record != nullptr && user != nullptr)
-        static_cast<LatestFrame *>(user)->store(*record);
-}
-
-void LatestFrame::store(const ubii_record &record) noexcept
+void LatestFrame::on_record(const ubii::Record &record) noexcept
 {
     ++received_;
     if (full_)
         ++dropped_; // replaced before the main loop took it
     full_ = true;
 
-    ubii_image_view image = {};
-    pending_.status = ubii_record_image(&record, &image);
+    ubii::ImageView image;
+    try {
+        image = record.image();
+        pending_.status = UBII_OK;
+    } catch (const ubii::Error &error) { // not an Image2D, or not valid protobuf
+        pending_.status = static_cast<ubii_status>(error.status());
+    }
     pending_.out_of_memory = false;
     pending_.width = image.width;
     pending_.height = image.height;
-    pending_.format = image.format;
+    pending_.format = static_cast<ubii_dataStructure_Image2D_DataFormat>(image.format);
     pending_.has_data = pending_.status == UBII_OK && image.data != nullptr;
     try {
         // assign() keeps the buffer's capacity: frames of one size allocate once.

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "ubii/node.hpp"
 #include "ubii/ubii.h"
 
 namespace ocr_node
@@ -31,9 +32,9 @@ struct Frame {
 class LatestFrame
 {
   public:
-    // The subscription callback (ubii_record_fn, `user` = this LatestFrame). Only copies the
-    // record's image; never throws.
-    static void on_record(ubii_node *node, const ubii_record *record, void *user) noexcept;
+    // The subscription's handler: only copies the record's image (read without a copy of the
+    // message); never throws.
+    void on_record(const ubii::Record &record) noexcept;
 
     // Swaps the newest frame into `frame` (whose buffer is reused for the next one); false when
     // nothing arrived since the last take.
@@ -49,8 +50,6 @@ class LatestFrame
     }
 
   private:
-    void store(const ubii_record &record) noexcept;
-
     Frame pending_;
     bool full_ = false;
     std::uint64_t received_ = 0;

@@ -18,8 +18,8 @@
 #include "stop_signal.hpp"
 #include "ubii/ocr/error.hpp"
 #include "ubii/ocr/omp.hpp"
+#include "ubii/node.hpp"
 #include "ubii/ocr/pipeline_factory.hpp"
-#include "ubii_owners.hpp"
 
 namespace ocr_node
 {
@@ -33,32 +33,18 @@ void print_line(const std::string &line)
     std::fflush(stdout);
 }
 
-// Node callbacks (C ABI): print only.
-void on_error(ubii_node *, ubii_status status, const char *detail, void *)
+// Polls until the node is ready; false on timeout, failure or a stop signal.
+bool wait_ready(ubii::Node &node, double timeout_s)
 {
-    std::fprintf(stderr, "ocr_node: %s (%s)\n", detail, ubii_strerror(status));
-}
-
-void on_state(ubii_node *, ubii_state previous, ubii_state current, ubii_status reason, void *)
-{
-    if (current == UBII_STATE_RECONNECTING || current == UBII_STATE_FAILED)
-        std::fprintf(stderr, "ocr_node: %s -> %s (%s)\n", ubii_state_name(previous),
-                     ubii_state_name(current), ubii_strerror(reason));
-}
-
-// Polls until the node is READY; false on timeout, FAILED or a stop signal.
-bool wait_ready(Node &node, double timeout_s)
-{
-    const auto deadline = std::chrono::steady_clock::now() +
-                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                              std::chrono::duration<double>(timeout_s));
-    while (node.state() != UBII_STATE_READY) {
-        if (stop_requested() != 0 || node.state() == UBII_STATE_FAILED ||
-            std::chrono::steady_clock::now() >= deadline)
-            return false;
-        ubii_node_poll(node.get(), 50);
-    }
-    return true;
+    const auto timeout = std::chrono::duration_cast<std::chrono::milliseconds>(
+        std::chrono::duration<double>(timeout_s));
+    return node.run_until(
+               [&] {
+                   return node.ready() || node.state() == ubii::ConnectionState::failed ||
+                          stop_requested() != 0;
+               },
+               timeout) &&
+           node.ready();
 }
 
 int run(const Settings &settings)
@@ -74,68 +60,83 @@ int run(const Settings &settings)
         return 1;
     }
 
-    const LinuxPort port = make_linux_port();
-    ubii_config config;
-    ubii_config_init(&config);
-    config.service_url = settings.service_url.c_str();
-    config.topic_url = settings.topic_url.c_str();
-    config.client_name = "libubii-ocr-node";
-    config.on_error = on_error;
-    config.on_state = on_state;
-    Node node(config, ubii_linux_port_get(port.get()));
+    ubii::NodeOptions options;
+    options.service_url = settings.service_url;
+    options.topic_url = settings.topic_url;
+    options.name = "libubii-ocr-node";
+    // Recognition keeps the polling thread busy for hundreds of milliseconds. libzmq's I/O thread
+    // takes frames in meanwhile, so the next poll has the newest one and the stale ones are
+    // dropped; the in-thread engine would leave them queued at the master, to be read in turn.
+    options.zmq_engine = ubii::ZmqEngine::libzmq;
+    options.libwebsockets_log_level = 1; // errors only
+    ubii::Node node(options);
+    node.on_error([](ubii::Status status, std::string_view detail) {
+        std::fprintf(stderr, "ocr_node: %.*s (%s)\n", static_cast<int>(detail.size()),
+                     detail.data(), ubii::describe(status));
+    });
+    node.on_state([](ubii::ConnectionState previous, ubii::ConnectionState current,
+                     ubii::Status reason) {
+        if (current == ubii::ConnectionState::reconnecting ||
+            current == ubii::ConnectionState::failed)
+            std::fprintf(stderr, "ocr_node: %s -> %s (%s)\n",
+                         std::string(ubii::to_string(previous)).c_str(),
+                         std::string(ubii::to_string(current)).c_str(), ubii::describe(reason));
+    });
 
-    ubii_status status = ubii_node_start(node.get());
-    if (status != UBII_OK) {
+    try {
+        node.start();
+    } catch (const ubii::Error &error) {
         std::fprintf(stderr, "ocr_node: cannot connect to %s / %s: %s\n",
-                     settings.service_url.c_str(), settings.topic_url.c_str(),
-                     ubii_strerror(status));
+                     settings.service_url.c_str(), settings.topic_url.c_str(), error.what());
         return 1;
     }
     if (!wait_ready(node, settings.connect_timeout_s)) {
         if (stop_requested() != 0)
             return 0;
+        const std::string transport = node.transport_error();
         std::fprintf(
             stderr, "ocr_node: the master at %s / %s was not reachable within %g s (node %s%s%s)\n",
             settings.service_url.c_str(), settings.topic_url.c_str(), settings.connect_timeout_s,
-            ubii_state_name(node.state()),
-            *ubii_linux_port_last_error(port.get()) != '\0' ? "; " : "",
-            ubii_linux_port_last_error(port.get()));
+            std::string(ubii::to_string(node.state())).c_str(), transport.empty() ? "" : "; ",
+            transport.c_str());
         return 1;
     }
 
     LatestFrame latest;
-    status = ubii_subscribe(node.get(), settings.input_topic.c_str(), LatestFrame::on_record,
-                            &latest, nullptr);
-    if (status != UBII_OK) {
+    ubii::Subscription frames_in;
+    try {
+        frames_in = node.subscribe(settings.input_topic,
+                                   [&latest](const ubii::Record &record) { latest.on_record(record); });
+    } catch (const ubii::Error &error) {
         std::fprintf(stderr, "ocr_node: cannot subscribe to %s: %s\n", settings.input_topic.c_str(),
-                     ubii_strerror(status));
+                     error.what());
         return 1;
     }
-    print_line("ocr_node: " + name + " pipeline ready, client " + ubii_node_client_id(node.get()) +
-               ", reading " + settings.input_topic + ", publishing " + settings.output_topic);
+    print_line("ocr_node: " + name + " pipeline ready, client " + node.client_id() + ", reading " +
+               settings.input_topic + ", publishing " + settings.output_topic);
 
     // Poll, then recognise the newest frame the poll delivered (outside the callback).
     Frame frame;
     std::uint64_t frames = 0, failed = 0;
     while (stop_requested() == 0) {
-        ubii_node_poll(node.get(), 100);
+        node.poll(std::chrono::milliseconds(100));
         if (!latest.take(frame))
             continue;
-        const FrameResult result = process_frame(*pipeline, node.get(), settings.output_topic,
+        const FrameResult result = process_frame(*pipeline, node.c_node(), settings.output_topic,
                                                  frame, ++frames, latest.dropped());
         failed += result.ok ? 0 : 1;
         if (!result.line.empty())
             print_line(result.line);
     }
 
-    status = node.stop();
+    const bool confirmed = node.stop_wait();
     print_line("ocr_node: stopped (signal " + std::to_string(stop_requested()) +
                "): " + std::to_string(frames) + " frames, " + std::to_string(failed) + " failed, " +
                std::to_string(latest.dropped()) + " dropped of " +
                std::to_string(latest.received()) + " received");
-    if (status != UBII_OK)
-        std::fprintf(stderr, "ocr_node: the master did not confirm the stop in %d ms (%s)\n",
-                     Node::stop_timeout_ms, ubii_strerror(status));
+    if (!confirmed)
+        std::fprintf(stderr, "ocr_node: the master did not confirm the stop in %lld ms\n",
+                     static_cast<long long>(options.stop_timeout.count()));
     return 0;
 }
 
