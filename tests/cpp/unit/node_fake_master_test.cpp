@@ -136,6 +136,7 @@ TEST_F(CppNodeWithFakeMaster, ASubscriptionCancelledInItsOwnCallbackGetsNothingM
         ++count;
         subscription.cancel(); // frees nothing the running callback still uses
     });
+    ASSERT_TRUE(poll_until(node, [&] { return !fake.subscribe_topics.empty(); }));
     fake.push_topic(ubii_test::double_record("/in", 1.0));
     fake.push_topic(ubii_test::double_record("/in", 2.0));
     node.poll();
