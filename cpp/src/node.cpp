@@ -13,15 +13,23 @@ namespace ubii
 namespace
 {
 
-// A topic as the C API takes it: NUL-terminated, in a buffer of the node's topic limit.
+// A topic as the C API takes it: NUL-terminated; a view that is not is copied into a buffer of
+// the node's topic limit.
 class TopicText
 {
   public:
-    explicit TopicText(std::string_view topic) : ok_(!topic.empty() && topic.size() < sizeof text_)
+    explicit TopicText(TopicRef topic)
     {
-        if (ok_) {
-            std::memcpy(text_, topic.data(), topic.size());
-            text_[topic.size()] = '\0';
+        const std::string_view view = topic.view();
+        ok_ = !view.empty() && view.size() < sizeof copy_;
+        if (!ok_)
+            return;
+        if (topic.terminated()) {
+            text_ = view.data();
+        } else {
+            std::memcpy(copy_, view.data(), view.size());
+            copy_[view.size()] = '\0';
+            text_ = copy_;
         }
     }
     bool ok() const noexcept
@@ -34,8 +42,9 @@ class TopicText
     }
 
   private:
-    bool ok_;
-    char text_[UBII_MAX_TOPIC_SIZE];
+    bool ok_ = false;
+    const char *text_ = "";
+    char copy_[UBII_MAX_TOPIC_SIZE];
 };
 
 } // namespace
@@ -272,7 +281,7 @@ void Node::throw_unless_ok(Status status, std::string_view topic) const
 }
 
 #define UBII_CPP_PUBLISH_SCALAR(method, type, c_function)                                          \
-    Status Node::method(std::string_view topic, type value) noexcept                               \
+    Status Node::method(TopicRef topic, type value) noexcept                               \
     {                                                                                              \
         const TopicText text(topic);                                                               \
         if (!text.ok())                                                                            \
@@ -285,7 +294,7 @@ UBII_CPP_PUBLISH_SCALAR(publish_int32, std::int32_t, ubii_publish_int32)
 UBII_CPP_PUBLISH_SCALAR(publish_bool, bool, ubii_publish_bool)
 #undef UBII_CPP_PUBLISH_SCALAR
 
-Status Node::publish_string(std::string_view topic, std::string_view value) noexcept
+Status Node::publish_string(TopicRef topic, std::string_view value) noexcept
 {
     const TopicText text(topic);
     if (!text.ok())
@@ -293,7 +302,7 @@ Status Node::publish_string(std::string_view topic, std::string_view value) noex
     return to_status(ubii_publish_string(core_->c_node(), text.c_str(), value.data(), value.size()));
 }
 
-Status Node::publish_image(std::string_view topic, const ImageView &image) noexcept
+Status Node::publish_image(TopicRef topic, const ImageView &image) noexcept
 {
     const TopicText text(topic);
     if (!text.ok())
@@ -303,7 +312,7 @@ Status Node::publish_image(std::string_view topic, const ImageView &image) noexc
                                         image.data, image.size));
 }
 
-Status Node::publish_message(std::string_view topic, RecordType type,
+Status Node::publish_message(TopicRef topic, RecordType type,
                              const google::protobuf::MessageLite &message) noexcept
 {
     if (type == RecordType::IMAGE2D) { // the pixels go to the transport without a copy of ours
@@ -328,7 +337,7 @@ Status Node::publish_message(std::string_view topic, RecordType type,
                                           bytes.size()));
 }
 
-Status Node::publish_value(std::string_view topic, const Value &value) noexcept
+Status Node::publish_value(TopicRef topic, const Value &value) noexcept
 {
     const RecordType type = value.type();
     return value.visit([&](const auto &held) -> Status {

@@ -1,6 +1,7 @@
 #include "node_core.hpp"
 
 #include <algorithm>
+#include <type_traits>
 #include <cstring>
 #include <limits>
 
@@ -72,12 +73,20 @@ int milliseconds_int(std::chrono::milliseconds value)
 
 } // namespace
 
-template <class F> void NodeCore::guard(const std::string &where, F &&code) noexcept
+template <class Where, class F> void NodeCore::guard(const Where &where, F &&code) noexcept
 {
     try {
         code();
     } catch (...) {
-        report_exception(where, std::current_exception());
+        const std::exception_ptr error = std::current_exception();
+        try {
+            if constexpr (std::is_invocable_v<const Where &>)
+                report_exception(where(), error);
+            else
+                report_exception(where, error);
+        } catch (...) { // building the text failed: report what can be said without it
+            report_exception("a callback", error);
+        }
     }
 }
 
@@ -183,7 +192,8 @@ void NodeCore::after_poll()
         waiting_.erase(std::remove_if(waiting_.begin(), waiting_.end(), usable_now),
                        waiting_.end());
         for (auto &entry : due)
-            guard("when_usable(" + std::string(to_string(entry.first)) + ")", entry.second);
+            guard([&entry] { return "when_usable(" + std::string(to_string(entry.first)) + ")"; },
+                  entry.second);
     }
     retired_.clear();
 }
@@ -221,7 +231,7 @@ void NodeCore::on_state(ubii_node *, ubii_state, ubii_state current, ubii_status
     auto *core = static_cast<NodeCore *>(user);
     if (core->destroying_)
         return;
-    core->guard("the connection protocol", [&] { core->mirror(current, reason); });
+    core->guard(std::string("the connection protocol"), [&] { core->mirror(current, reason); });
 }
 
 void NodeCore::on_error(ubii_node *, ubii_status status, const char *detail, void *user)
@@ -235,7 +245,7 @@ void NodeCore::on_record(ubii_node *, const ubii_record *record, void *user)
     if (!handler->active || handler->core->destroying_)
         return;
     const Record lent = Record::lend(*record);
-    handler->core->guard("the subscription to " + handler->pattern,
+    handler->core->guard([handler] { return "the subscription to " + handler->pattern; },
                          [&] { handler->fn(lent); });
 }
 
@@ -286,7 +296,8 @@ void NodeCore::on_reply(ubii_node *, const ubii_reply *reply, void *user)
     } catch (...) {
         outcome.emplace(Result<ServiceReply>::failure(std::current_exception()));
     }
-    core->guard("the reply of " + call->service, [&] { call->resolve(std::move(*outcome)); });
+    core->guard([&call] { return "the reply of " + call->service; },
+                [&] { call->resolve(std::move(*outcome)); });
 }
 
 std::uint64_t NodeCore::subscribe(std::string pattern, bool regex, Node::RecordHandler fn)

@@ -88,8 +88,10 @@ class NodeCore
     }
     Stats stats() const noexcept;
 
-    // Runs the application's `code`; an exception becomes an error event naming `where`.
-    template <class F> void guard(const std::string &where, F &&code) noexcept;
+    // Runs the application's `code`; an exception becomes an error event naming where it came
+    // from: `where` is a string, or a callable making one (only when something was thrown, so
+    // that the per-record path builds no string).
+    template <class Where, class F> void guard(const Where &where, F &&code) noexcept;
     void report(Status status, const std::string &detail) noexcept;
 
   private:

@@ -87,6 +87,34 @@ struct Stats {
     std::uint64_t type_mismatches = 0;
 };
 
+// A topic as the publishing calls take it: from a C string or std::string it is passed to the core
+// as it is; a std::string_view (not NUL-terminated) is copied first, into a buffer on the stack.
+class TopicRef
+{
+  public:
+    TopicRef(const char *topic) : view_(topic != nullptr ? topic : ""), terminated_(true)
+    {
+    }
+    TopicRef(const std::string &topic) : view_(topic), terminated_(true)
+    {
+    }
+    TopicRef(std::string_view topic) : view_(topic), terminated_(false)
+    {
+    }
+    std::string_view view() const noexcept
+    {
+        return view_;
+    }
+    bool terminated() const noexcept
+    {
+        return terminated_;
+    }
+
+  private:
+    std::string_view view_;
+    bool terminated_;
+};
+
 // A subscription of a callback to a topic or regex. Unsubscribes when destroyed or cancel()led:
 // the master stops forwarding once no subscription of the node wants the topic. Movable.
 class Subscription
@@ -211,16 +239,16 @@ class Node
     // message type of a member (Vector3, Pose3D, Object2DList, Image2D, Session, ...), ImageView,
     // or a ubii::Value. Throws ubii::NotConnected unless ready, ubii::WouldBlock when the transport
     // cannot take it now, ubii::TooLarge over the size limit.
-    template <class T> void publish(std::string_view topic, const T &value)
+    template <class T> void publish(TopicRef topic, const T &value)
     {
-        throw_unless_ok(try_publish(topic, value), topic);
+        throw_unless_ok(try_publish(topic, value), topic.view());
     }
     void publish(const Record &record)
     {
         throw_unless_ok(try_publish(record), record.topic());
     }
     // The same, never throwing: Status::ok or why not.
-    template <class T> Status try_publish(std::string_view topic, const T &value) noexcept
+    template <class T> Status try_publish(TopicRef topic, const T &value) noexcept
     {
         using D = std::decay_t<T>;
         if constexpr (std::is_same_v<D, bool>)
@@ -289,15 +317,15 @@ class Node
         };
     }
     void throw_unless_ok(Status status, std::string_view topic) const;
-    Status publish_double(std::string_view topic, double value) noexcept;
-    Status publish_float(std::string_view topic, float value) noexcept;
-    Status publish_int32(std::string_view topic, std::int32_t value) noexcept;
-    Status publish_bool(std::string_view topic, bool value) noexcept;
-    Status publish_string(std::string_view topic, std::string_view value) noexcept;
-    Status publish_image(std::string_view topic, const ImageView &image) noexcept;
-    Status publish_message(std::string_view topic, RecordType type,
+    Status publish_double(TopicRef topic, double value) noexcept;
+    Status publish_float(TopicRef topic, float value) noexcept;
+    Status publish_int32(TopicRef topic, std::int32_t value) noexcept;
+    Status publish_bool(TopicRef topic, bool value) noexcept;
+    Status publish_string(TopicRef topic, std::string_view value) noexcept;
+    Status publish_image(TopicRef topic, const ImageView &image) noexcept;
+    Status publish_message(TopicRef topic, RecordType type,
                            const google::protobuf::MessageLite &message) noexcept;
-    Status publish_value(std::string_view topic, const Value &value) noexcept;
+    Status publish_value(TopicRef topic, const Value &value) noexcept;
     // Queues `request`; `resolve` receives the reply (or the failure) inside poll().
     void queue_call(const ServiceRequest &request, std::chrono::milliseconds timeout,
                     std::function<void(Result<ServiceReply>)> resolve);
