@@ -87,8 +87,8 @@ class ReplayPort
         };
         vtable_.epoch_ms = [](void *) { return std::int64_t{1700000000000}; };
         // TopicData{record{topic "/bench", double 1.5}}
-        record_ = bytes({0x12, 0x11, 0x0a, 0x06, '/', 'b', 'e', 'n', 'c', 'h', 0x19, 0, 0, 0, 0,
-                         0, 0, 0xf8, 0x3f});
+        record_ = bytes({0x12, 0x11, 0x0a, 0x06, '/', 'b', 'e', 'n', 'c', 'h', 0x19, 0, 0, 0, 0, 0,
+                         0, 0xf8, 0x3f});
     }
     ubii_port get()
     {
@@ -174,8 +174,8 @@ int main(int argc, char **argv)
     options.service_url = "tcp://replay:8101";
     options.stamp_records = false;
     ubii::Node node(options, cpp_port.get());
-    auto subscription =
-        node.subscribe("/bench", [](const ubii::Record &record) { received_sum += record.as<double>(); });
+    auto subscription = node.subscribe(
+        "/bench", [](const ubii::Record &record) { received_sum += record.as<double>(); });
     node.start();
     for (int i = 0; i < 20 && !node.ready(); ++i)
         node.poll();
@@ -186,7 +186,8 @@ int main(int argc, char **argv)
 
     auto receive_c = [&](std::size_t count) {
         c_port.queue_records(count);
-        while (ubii_node_poll(&c_node, 0) == UBII_OK && ubii_node_state(&c_node) == UBII_STATE_READY) {
+        while (ubii_node_poll(&c_node, 0) == UBII_OK &&
+               ubii_node_state(&c_node) == UBII_STATE_READY) {
             ubii_stats stats;
             ubii_node_stats(&c_node, &stats);
             if (stats.records_received % count == 0 && stats.records_received > 0)

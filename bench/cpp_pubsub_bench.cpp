@@ -130,8 +130,7 @@ try {
         }
     }
     if (!poll_until(base + messages, 30.0)) {
-        std::fprintf(stderr, "cpp_pubsub_bench: %ld of %ld came back\n", received - base,
-                     messages);
+        std::fprintf(stderr, "cpp_pubsub_bench: %ld of %ld came back\n", received - base, messages);
         return 1;
     }
     const double elapsed = seconds_since(start);

@@ -27,8 +27,8 @@ LinuxPortOwner::LinuxPortOwner(const NodeOptions &options) : handle_(std::make_u
     port_options.enable_tls = options.enable_tls;
     port_options.allow_self_signed = options.allow_self_signed;
     port_options.libwebsockets_log_level = options.libwebsockets_log_level;
-    port_options.zmq_engine = options.zmq_engine == ZmqEngine::libzmq ? UBII_LINUX_ZMQ_LIBZMQ
-                                                                      : UBII_LINUX_ZMQ_IN_THREAD;
+    port_options.zmq_engine =
+        options.zmq_engine == ZmqEngine::libzmq ? UBII_LINUX_ZMQ_LIBZMQ : UBII_LINUX_ZMQ_IN_THREAD;
     const ubii_status status = ubii_linux_port_create(&handle_->port, &port_options);
     if (status != UBII_OK)
         throw_status(to_status(status), "cannot create the Linux port");

@@ -126,7 +126,8 @@ bool Subscription::active() const noexcept
 
 // ---- Node ---------------------------------------------------------------------------------------
 
-Node::Node(NodeOptions options) : core_(std::make_shared<detail::NodeCore>(std::move(options), nullptr))
+Node::Node(NodeOptions options)
+    : core_(std::make_shared<detail::NodeCore>(std::move(options), nullptr))
 {
 }
 
@@ -153,13 +154,13 @@ void Node::connect(std::chrono::milliseconds timeout)
 {
     if (state() == ConnectionState::stopped || state() == ConnectionState::failed)
         start();
-    const bool settled = run_until(
-        [this] { return ready() || state() == ConnectionState::failed; }, timeout);
+    const bool settled =
+        run_until([this] { return ready() || state() == ConnectionState::failed; }, timeout);
     if (ready())
         return;
     const std::string transport = transport_error();
-    const std::string where = options().service_url +
-                              (options().topic_url.empty() ? "" : " / " + options().topic_url);
+    const std::string where =
+        options().service_url + (options().topic_url.empty() ? "" : " / " + options().topic_url);
     const std::string detail = " (node " + std::string(to_string(state())) +
                                (transport.empty() ? "" : "; " + transport) + ")";
     if (settled)
@@ -257,8 +258,8 @@ void Node::when_usable(Behaviour behaviour, std::function<void()> action)
 bool Node::wait_usable(Behaviour behaviour, std::chrono::milliseconds timeout)
 {
     if (!implements(behaviour))
-        throw Unsupported("ubii::Node does not implement the " +
-                          std::string(to_string(behaviour)) + " behaviour");
+        throw Unsupported("ubii::Node does not implement the " + std::string(to_string(behaviour)) +
+                          " behaviour");
     return run_until([this, behaviour] { return usable(behaviour); }, timeout);
 }
 
@@ -281,7 +282,7 @@ void Node::throw_unless_ok(Status status, std::string_view topic) const
 }
 
 #define UBII_CPP_PUBLISH_SCALAR(method, type, c_function)                                          \
-    Status Node::method(TopicRef topic, type value) noexcept                               \
+    Status Node::method(TopicRef topic, type value) noexcept                                       \
     {                                                                                              \
         const TopicText text(topic);                                                               \
         if (!text.ok())                                                                            \
@@ -299,7 +300,8 @@ Status Node::publish_string(TopicRef topic, std::string_view value) noexcept
     const TopicText text(topic);
     if (!text.ok())
         return Status::invalid_argument;
-    return to_status(ubii_publish_string(core_->c_node(), text.c_str(), value.data(), value.size()));
+    return to_status(
+        ubii_publish_string(core_->c_node(), text.c_str(), value.data(), value.size()));
 }
 
 Status Node::publish_image(TopicRef topic, const ImageView &image) noexcept
@@ -307,9 +309,9 @@ Status Node::publish_image(TopicRef topic, const ImageView &image) noexcept
     const TopicText text(topic);
     if (!text.ok())
         return Status::invalid_argument;
-    return to_status(ubii_publish_image(core_->c_node(), text.c_str(), image.width, image.height,
-                                        static_cast<ubii_dataStructure_Image2D_DataFormat>(image.format),
-                                        image.data, image.size));
+    return to_status(ubii_publish_image(
+        core_->c_node(), text.c_str(), image.width, image.height,
+        static_cast<ubii_dataStructure_Image2D_DataFormat>(image.format), image.data, image.size));
 }
 
 Status Node::publish_message(TopicRef topic, RecordType type,
@@ -317,9 +319,10 @@ Status Node::publish_message(TopicRef topic, RecordType type,
 {
     if (type == RecordType::IMAGE2D) { // the pixels go to the transport without a copy of ours
         const auto &image = static_cast<const Image2D &>(message);
-        return publish_image(topic, ImageView{image.width(), image.height(), image.data_format(),
-                                              reinterpret_cast<const std::uint8_t *>(image.data().data()),
-                                              image.data().size()});
+        return publish_image(topic,
+                             ImageView{image.width(), image.height(), image.data_format(),
+                                       reinterpret_cast<const std::uint8_t *>(image.data().data()),
+                                       image.data().size()});
     }
     const TopicText text(topic);
     if (!text.ok())
@@ -331,10 +334,9 @@ Status Node::publish_message(TopicRef topic, RecordType type,
     } catch (...) { // allocation
         return Status::encode;
     }
-    return to_status(ubii_publish_encoded(core_->c_node(), text.c_str(),
-                                          static_cast<ubii_record_type>(type),
-                                          reinterpret_cast<const std::uint8_t *>(bytes.data()),
-                                          bytes.size()));
+    return to_status(
+        ubii_publish_encoded(core_->c_node(), text.c_str(), static_cast<ubii_record_type>(type),
+                             reinterpret_cast<const std::uint8_t *>(bytes.data()), bytes.size()));
 }
 
 Status Node::publish_value(TopicRef topic, const Value &value) noexcept

@@ -39,9 +39,11 @@ std::vector<std::pair<ConnectionState, ConnectionState>> connection_transitions(
 {
     using S = ConnectionState;
     std::vector<std::pair<S, S>> allowed = {
-        {S::stopped, S::connecting},   {S::failed, S::connecting},    {S::failed, S::stopped},
-        {S::connecting, S::registering}, {S::registering, S::opening}, {S::opening, S::preparing},
-        {S::preparing, S::ready},      {S::reconnecting, S::connecting}, {S::stopping, S::stopped},
+        {S::stopped, S::connecting},  {S::failed, S::connecting},
+        {S::failed, S::stopped},      {S::connecting, S::registering},
+        {S::registering, S::opening}, {S::opening, S::preparing},
+        {S::preparing, S::ready},     {S::reconnecting, S::connecting},
+        {S::stopping, S::stopped},
     };
     for (S from : {S::connecting, S::registering, S::opening, S::preparing, S::ready}) {
         for (S to : {S::reconnecting, S::stopping, S::stopped, S::failed})
@@ -154,9 +156,9 @@ void NodeCore::start()
 {
     const ubii_status status = ubii_node_start(node_.get());
     if (status != UBII_OK)
-        throw_status(to_status(status), "cannot start the node for " + options_.service_url +
-                                            (options_.topic_url.empty() ? std::string()
-                                                                        : " / " + options_.topic_url));
+        throw_status(to_status(status),
+                     "cannot start the node for " + options_.service_url +
+                         (options_.topic_url.empty() ? std::string() : " / " + options_.topic_url));
 }
 
 void NodeCore::poll(std::chrono::milliseconds timeout)
@@ -225,8 +227,7 @@ void NodeCore::mirror(ubii_state current, ubii_status reason)
     settle();
 }
 
-void NodeCore::on_state(ubii_node *, ubii_state, ubii_state current, ubii_status reason,
-                        void *user)
+void NodeCore::on_state(ubii_node *, ubii_state, ubii_state current, ubii_status reason, void *user)
 {
     auto *core = static_cast<NodeCore *>(user);
     if (core->destroying_)
@@ -266,8 +267,8 @@ void NodeCore::on_reply(ubii_node *, const ubii_reply *reply, void *user)
         switch (reply->status) {
         case UBII_OK: {
             ServiceReply parsed;
-            const auto *member = ServiceReply::descriptor()->FindFieldByNumber(
-                static_cast<int>(reply->member));
+            const auto *member =
+                ServiceReply::descriptor()->FindFieldByNumber(static_cast<int>(reply->member));
             if (member == nullptr || member->message_type() == nullptr)
                 throw UnexpectedReply(call->service + ": the reply's member " +
                                       std::to_string(reply->member) + " is not in the schema");

@@ -3,8 +3,8 @@
 
 // ubii::Node: a Ubi-Interact client node in C++, over the C core's ubii_node.
 //
-//     ubii::Node node(options);                   // owns a Linux port (or runs on a ubii_port given)
-//     node.connect(5s);                           // start, and poll until ready (or throw)
+//     ubii::Node node(options);                   // owns a Linux port (or runs on a ubii_port
+//     given) node.connect(5s);                           // start, and poll until ready (or throw)
 //     auto sub = node.subscribe<ubii::Vector3>("/hand", [](const ubii::Vector3 &v,
 //                                                          const ubii::RecordInfo &info) { ... });
 //     node.publish("/speed", 1.5);

@@ -56,8 +56,8 @@ struct NodeOptions {
 
     // The Linux port the node creates (ignored when the node is given a port of its own).
     ZmqEngine zmq_engine = ZmqEngine::in_thread;
-    bool enable_tls = false;        // wss:// and https:// (loads OpenSSL's store: ~40 ms)
-    bool allow_self_signed = false; // TLS: accept self-signed certificates
+    bool enable_tls = false;          // wss:// and https:// (loads OpenSSL's store: ~40 ms)
+    bool allow_self_signed = false;   // TLS: accept self-signed certificates
     std::size_t max_message_size = 0; // 0: 16 MiB
     int libwebsockets_log_level = 1;  // errors only; 0 leaves libwebsockets' own setting
 };

@@ -8,7 +8,8 @@
 // The node's connection lifecycle is one (ConnectionState, ubii/node.hpp), the processing module
 // lifecycle reuses it.
 //
-//     ubii::Protocol<Light> light("light", Light::off, {{Light::off, Light::on}, {Light::on, Light::off}},
+//     ubii::Protocol<Light> light("light", Light::off, {{Light::off, Light::on}, {Light::on,
+//     Light::off}},
 //                                 light_name);
 //     light.on_enter(Light::on, [](ubii::Transition<Light> &t) { ... });
 //     light.transition(Light::on);        // ubii::StateError for a transition not allowed

@@ -34,10 +34,9 @@ RecordType record_type_for_format(std::string_view format) noexcept;
 namespace detail
 {
 // Every member in field number order, NONE first: the order of ubii::Value's alternatives.
-inline constexpr RecordType record_types[] = {
-    RecordType::NONE,
+inline constexpr RecordType record_types[] = {RecordType::NONE,
 #define UBII_CPP_RECORD_ITEM(upper, number, name, format, cpp_type) RecordType::upper,
-    UBII_RECORD_MEMBER_LIST(UBII_CPP_RECORD_ITEM)
+                                              UBII_RECORD_MEMBER_LIST(UBII_CPP_RECORD_ITEM)
 #undef UBII_CPP_RECORD_ITEM
 };
 inline constexpr std::size_t record_type_count = sizeof record_types / sizeof record_types[0];
@@ -69,8 +68,7 @@ template <class T> constexpr RecordType first_member_of()
 // type no member holds.
 template <class T> inline constexpr RecordType record_type_of = detail::first_member_of<T>();
 
-template <class T>
-inline constexpr bool is_record_value_v = record_type_of<T> != RecordType::NONE;
+template <class T> inline constexpr bool is_record_value_v = record_type_of<T> != RecordType::NONE;
 
 } // namespace ubii
 

@@ -7,7 +7,8 @@
 //
 //     auto call = node.master().server_configuration();
 //     call.then([](const ubii::Result<ubii::Server> &server) { ... });   // inside a later poll()
-//     ubii::Server server = node.wait(call, 2s);                         // or poll until it is done
+//     ubii::Server server = node.wait(call, 2s);                         // or poll until it is
+//     done
 //
 // A Call is a cheap handle (copies share the call); dropping every handle does not cancel it.
 

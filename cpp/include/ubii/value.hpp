@@ -106,8 +106,8 @@ class Value
         switch (type) {
 #define UBII_CPP_VALUE_EMPLACE(upper, number, name, format, cpp_type)                              \
     case RecordType::upper:                                                                        \
-        if constexpr (std::is_constructible_v<cpp_type, T &&>) {                                  \
-            variant_.template emplace<detail::alternative_of(RecordType::upper)>(                 \
+        if constexpr (std::is_constructible_v<cpp_type, T &&>) {                                   \
+            variant_.template emplace<detail::alternative_of(RecordType::upper)>(                  \
                 std::forward<T>(value));                                                           \
             return;                                                                                \
         }                                                                                          \

@@ -74,14 +74,14 @@ int run(const Settings &settings)
         std::fprintf(stderr, "ocr_node: %.*s (%s)\n", static_cast<int>(detail.size()),
                      detail.data(), ubii::describe(status));
     });
-    node.on_state([](ubii::ConnectionState previous, ubii::ConnectionState current,
-                     ubii::Status reason) {
-        if (current == ubii::ConnectionState::reconnecting ||
-            current == ubii::ConnectionState::failed)
-            std::fprintf(stderr, "ocr_node: %s -> %s (%s)\n",
-                         std::string(ubii::to_string(previous)).c_str(),
-                         std::string(ubii::to_string(current)).c_str(), ubii::describe(reason));
-    });
+    node.on_state(
+        [](ubii::ConnectionState previous, ubii::ConnectionState current, ubii::Status reason) {
+            if (current == ubii::ConnectionState::reconnecting ||
+                current == ubii::ConnectionState::failed)
+                std::fprintf(stderr, "ocr_node: %s -> %s (%s)\n",
+                             std::string(ubii::to_string(previous)).c_str(),
+                             std::string(ubii::to_string(current)).c_str(), ubii::describe(reason));
+        });
 
     try {
         node.start();
@@ -105,8 +105,9 @@ int run(const Settings &settings)
     LatestFrame latest;
     ubii::Subscription frames_in;
     try {
-        frames_in = node.subscribe(settings.input_topic,
-                                   [&latest](const ubii::Record &record) { latest.on_record(record); });
+        frames_in = node.subscribe(settings.input_topic, [&latest](const ubii::Record &record) {
+            latest.on_record(record);
+        });
     } catch (const ubii::Error &error) {
         std::fprintf(stderr, "ocr_node: cannot subscribe to %s: %s\n", settings.input_topic.c_str(),
                      error.what());

@@ -186,7 +186,9 @@ CountingPort::CountingPort() : inner_port_(inner_.get())
     vtable_.open = [](void *p, ubii_channel c, const char *url, const char *id) {
         return inner_of(p).vtable->open(inner_of(p).context, c, url, id);
     };
-    vtable_.close = [](void *p, ubii_channel c) { inner_of(p).vtable->close(inner_of(p).context, c); };
+    vtable_.close = [](void *p, ubii_channel c) {
+        inner_of(p).vtable->close(inner_of(p).context, c);
+    };
     vtable_.state = [](void *p, ubii_channel c) {
         return inner_of(p).vtable->state(inner_of(p).context, c);
     };
@@ -226,8 +228,8 @@ ubii_status CountingPort::receive(void *port, ubii_channel channel, const std::u
                                   std::size_t *size, unsigned *flags)
 {
     auto *self = static_cast<CountingPort *>(port);
-    const ubii_status status = self->inner_port_.vtable->receive(self->inner_port_.context,
-                                                                 channel, data, size, flags);
+    const ubii_status status =
+        self->inner_port_.vtable->receive(self->inner_port_.context, channel, data, size, flags);
     if (status == UBII_OK && channel == UBII_CHANNEL_TOPIC &&
         !(*size == 4 && std::memcmp(*data, "PING", 4) == 0))
         ++self->topic_messages_;

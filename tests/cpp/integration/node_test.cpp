@@ -59,8 +59,7 @@ TEST(NodeSubscriptions, MovedAndReleasedSubscriptionsKeepDelivering)
     int count = 0;
     ubii::Subscription moved;
     {
-        ubii::Subscription original =
-            node.subscribe(topic, [&](const ubii::Record &) { ++count; });
+        ubii::Subscription original = node.subscribe(topic, [&](const ubii::Record &) { ++count; });
         moved = std::move(original);
         EXPECT_FALSE(original.active()); // NOLINT(bugprone-use-after-move): moved-from is empty
     }

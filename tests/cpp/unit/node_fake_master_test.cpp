@@ -61,8 +61,8 @@ TEST_F(CppNodeWithFakeMaster, ReachesReadyThroughPreparingAndReportsEveryState)
     node.start();
     ASSERT_TRUE(poll_until(node, [&] { return node.ready(); }));
     using S = ubii::ConnectionState;
-    EXPECT_EQ(states, (std::vector<S>{S::connecting, S::registering, S::opening, S::preparing,
-                                      S::ready}));
+    EXPECT_EQ(states,
+              (std::vector<S>{S::connecting, S::registering, S::opening, S::preparing, S::ready}));
     EXPECT_EQ(node.client_id(), client_id);
 }
 
@@ -204,8 +204,8 @@ TEST_F(CppNodeWithFakeMaster, PublishingBeforeReadyThrowsOrReports)
     EXPECT_EQ(node.try_publish("/out", ubii::Value()), ubii::Status::invalid_argument);
     node.publish("/out", 1.0);
     node.publish("/out", ubii::vector3(1, 2, 3));
-    node.publish(ubii::Record("/out", ubii::Value(ubii::RecordType::QUATERNION_LIST,
-                                                  ubii::quaternion(0, 0, 0, 1))));
+    node.publish(ubii::Record(
+        "/out", ubii::Value(ubii::RecordType::QUATERNION_LIST, ubii::quaternion(0, 0, 0, 1))));
     EXPECT_EQ(node.stats().records_published, 3u);
 }
 
@@ -219,9 +219,8 @@ TEST_F(CppNodeWithFakeMaster, CallsResolveWithTheMastersErrorOrATimeout)
     request.set_topic("/services/never");
     auto unanswered = node.call(request, 300ms);
     std::optional<ubii::Status> continuation;
-    unanswered.then([&](const ubii::Result<ubii::ServiceReply> &result) {
-        continuation = result.status();
-    });
+    unanswered.then(
+        [&](const ubii::Result<ubii::ServiceReply> &result) { continuation = result.status(); });
     ASSERT_TRUE(poll_until(node, [&] { return refused.done() && unanswered.done(); }));
     EXPECT_EQ(refused.result().status(), ubii::Status::broker);
     try {
