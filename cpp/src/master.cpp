@@ -15,7 +15,7 @@ ServiceRequest request_for(const char *topic)
 }
 } // namespace
 
-template <class T> Call<T> Master::call(ServiceRequest request)
+template <class T> Call<T> detail::ServiceGroup::call(ServiceRequest request)
 {
     return node_.call_as<T>(request, timeout_);
 }
@@ -83,11 +83,6 @@ Call<ProcessingModuleList> Master::processing_modules(const ProcessingModuleList
     if (filter.elements_size() > 0)
         *request.mutable_processing_module_list() = filter;
     return call<ProcessingModuleList>(std::move(request));
-}
-
-template <class T> Call<T> Sessions::call(ServiceRequest request)
-{
-    return node_.call_as<T>(request, timeout_);
 }
 
 Call<SessionList> Sessions::list()

@@ -43,11 +43,27 @@ inline constexpr const char session_list[] = "/services/session/runtime/get_list
 inline constexpr const char session_save[] = "/services/session/database/save";
 } // namespace service_topics
 
-class Master
+namespace detail
+{
+// What Master and Sessions share: the node they call through and the timeout of their calls.
+class ServiceGroup
+{
+  protected:
+    ServiceGroup(Node &node, std::chrono::milliseconds timeout) : node_(node), timeout_(timeout)
+    {
+    }
+    template <class T> Call<T> call(ServiceRequest request);
+
+    Node &node_;
+    std::chrono::milliseconds timeout_;
+};
+} // namespace detail
+
+class Master : public detail::ServiceGroup
 {
   public:
     explicit Master(Node &node, std::chrono::milliseconds timeout = std::chrono::milliseconds(0))
-        : node_(node), timeout_(timeout)
+        : ServiceGroup(node, timeout)
     {
     }
     // The same calls with another timeout.
@@ -72,18 +88,13 @@ class Master
     Call<Success> deregister_device(const std::string &device_id);
     // The processing module specs the master knows (its database and every client's).
     Call<ProcessingModuleList> processing_modules(const ProcessingModuleList &filter = {});
-
-  private:
-    template <class T> Call<T> call(ServiceRequest request);
-    Node &node_;
-    std::chrono::milliseconds timeout_;
 };
 
-class Sessions
+class Sessions : public detail::ServiceGroup
 {
   public:
     explicit Sessions(Node &node, std::chrono::milliseconds timeout = std::chrono::milliseconds(0))
-        : node_(node), timeout_(timeout)
+        : ServiceGroup(node, timeout)
     {
     }
     Sessions with_timeout(std::chrono::milliseconds timeout) const
@@ -103,11 +114,6 @@ class Sessions
     Call<Success> stop(const std::string &id);
     // Saves a session spec in the master's database; the reply lists the sessions it created.
     Call<SessionList> save(Session session);
-
-  private:
-    template <class T> Call<T> call(ServiceRequest request);
-    Node &node_;
-    std::chrono::milliseconds timeout_;
 };
 
 } // namespace ubii
