@@ -17,7 +17,7 @@ list(JOIN UBII_SANITIZE_LINK_FLAGS " " UBII_PC_LINK_FLAGS)
 configure_file(cmake/ubii.pc.in "${CMAKE_CURRENT_BINARY_DIR}/ubii.pc" @ONLY)
 install(FILES "${CMAKE_CURRENT_BINARY_DIR}/ubii.pc" DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
 
-# pkg-config for the C++ layer: its static library on top of ubii and libprotobuf.
+# pkg-config for the C++ layer: its static library on the static libubii and libprotobuf.
 if(UBII_WITH_CPP)
   configure_file(cmake/ubii-cpp.pc.in "${CMAKE_CURRENT_BINARY_DIR}/ubii-cpp.pc" @ONLY)
   install(FILES "${CMAKE_CURRENT_BINARY_DIR}/ubii-cpp.pc" DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")

@@ -66,7 +66,11 @@ try {
     }
     pump(300ms);
     std::printf("sent %d records, received %d\n", sent, received);
-    return sent > 0 && received == sent ? 0 : 1;
+    if (sent == 0 || received != sent) {
+        std::fprintf(stderr, "pubsub_cpp: not every record sent arrived\n");
+        return 1;
+    }
+    return 0;
 } catch (const std::exception &error) {
     std::fprintf(stderr, "pubsub_cpp: %s\n", error.what());
     return 1;

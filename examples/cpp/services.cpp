@@ -20,26 +20,31 @@ try {
 
     std::printf("services:\n");
     const ubii::ServiceList services = node.wait(node.master().services(), 5s);
-    for (const auto &service : services.elements())
+    bool has_client_list = false;
+    for (const auto &service : services.elements()) {
         std::printf("  %-55s %s -> %s\n", service.topic().c_str(),
                     service.request_message_format().c_str(),
                     service.response_message_format().c_str());
+        has_client_list = has_client_list || service.topic() == ubii::service_topics::client_list;
+    }
 
     std::printf("topics (services first, then topics holding data):\n");
     const ubii::StringList topics = node.wait(node.master().topics(), 5s);
     for (const auto &topic : topics.elements())
         std::printf("  %s\n", topic.c_str());
 
-    try {
-        const ubii::ClientList clients = node.wait(node.master().clients(), 5s);
-        std::printf("clients:\n");
-        for (const auto &client : clients.elements())
-            std::printf("  %s  %s%s\n", client.id().c_str(), client.name().c_str(),
-                        client.id() == node.client_id() ? "  (this node)" : "");
-    } catch (const ubii::ServiceError &) {
-        // The npm 0.4.0 master registers no /services/client/get_list; the current one does.
-        std::printf("clients: this master has no client list service\n");
+    // The npm 0.4.0 master registers no /services/client/get_list (the current master does):
+    // asking would only earn an error reply, so say what is missing instead.
+    if (!has_client_list) {
+        std::printf("clients: this master has no client list service (%s)\n",
+                    ubii::service_topics::client_list);
+        return 0;
     }
+    const ubii::ClientList clients = node.wait(node.master().clients(), 5s);
+    std::printf("clients:\n");
+    for (const auto &client : clients.elements())
+        std::printf("  %s  %s%s\n", client.id().c_str(), client.name().c_str(),
+                    client.id() == node.client_id() ? "  (this node)" : "");
     return 0;
 } catch (const std::exception &error) {
     std::fprintf(stderr, "services_cpp: %s\n", error.what());

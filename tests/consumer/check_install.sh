@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the build tree BUILD_DIR into WORK/prefix, then builds and runs the consumer application
 # against it three ways: find_package with the static library, with the shared library, and
-# pkg-config.
+# pkg-config; with cpp, a C++ consumer both with find_package(ubii COMPONENTS cpp) and pkg-config
+# ubii-cpp.
 #   check_install.sh BUILD_DIR WORK [ocr] [cpp]   (ocr: the build has the OCR pipelines, cpp: the
 #                                                 C++ layer; use them too, cpp also via pkg-config)
 set -euo pipefail
@@ -52,9 +53,14 @@ fi
 if [ "$consumer_cpp" = ON ]; then
   "$work/cmake-build/consumer_cpp"
   cpp_flags=$(PKG_CONFIG_PATH="$libdir/pkgconfig" pkg-config --cflags --libs ubii-cpp)
-  # Sanitized builds put the sanitizer runtimes into ubii.pc's Libs already.
+  # Sanitized builds put the sanitizer runtimes into ubii-cpp.pc's Libs already.
   c++ -Wall -Werror "$here/consumer_cpp.cpp" $cpp_flags -o "$work/consumer_cpp_pkgconfig"
-  LD_LIBRARY_PATH="$libdir" "$work/consumer_cpp_pkgconfig"
+  # ubii-cpp.pc names the static libubii, as ubii::ubii_cpp does: no libubii.so is looked for.
+  if ldd "$work/consumer_cpp_pkgconfig" | grep -F libubii.so >/dev/null; then
+    echo "check_install: consumer_cpp_pkgconfig loads libubii.so instead of the static libubii" >&2
+    exit 1
+  fi
+  "$work/consumer_cpp_pkgconfig"
 fi
 parts="static, shared"
 [ "$consumer_ocr" = ON ] && parts="$parts, ocr"
