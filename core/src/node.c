@@ -23,6 +23,11 @@ uint64_t ubii__now(ubii_node *node)
     return node->port.vtable->monotonic_ms(node->port.context);
 }
 
+uint64_t ubii_node_monotonic_ms(const ubii_node *node)
+{
+    return node != NULL ? node->port.vtable->monotonic_ms(node->port.context) : 0;
+}
+
 size_t ubii_node_size(void)
 {
     return sizeof(ubii_node);

@@ -135,6 +135,15 @@ TEST_F(NodeWithFakeMaster, ConnectsInProtocolOrderAndOpensTopicsWithTheClientId)
     EXPECT_EQ(states, expected);
 }
 
+TEST_F(NodeWithFakeMaster, TellsTheTimeItsTimeoutsRunOn)
+{
+    start_ready();
+    EXPECT_EQ(ubii_node_monotonic_ms(&node), fake.now);
+    advance(250);
+    EXPECT_EQ(ubii_node_monotonic_ms(&node), fake.now);
+    EXPECT_EQ(ubii_node_monotonic_ms(nullptr), 0u);
+}
+
 TEST_F(NodeWithFakeMaster, StateChangesFromStartAreAnnouncedOnlyInsidePoll)
 {
     init();

@@ -134,6 +134,10 @@ UBII_API void ubii_node_stats(const ubii_node *node, ubii_stats *stats);
 UBII_API int ubii_node_pollfds(ubii_node *node, ubii_pollfd *fds, int capacity);
 UBII_API int ubii_node_next_timeout_ms(ubii_node *node);
 
+/* Milliseconds on the monotonic clock the node's timeouts run on (its port's), so that code
+ * scheduling beside the node agrees with it. 0 for NULL. */
+UBII_API uint64_t ubii_node_monotonic_ms(const ubii_node *node);
+
 #ifdef __cplusplus
 }
 #endif

@@ -3,7 +3,9 @@
 #include <poll.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/eventfd.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "linux_port.h"
 
@@ -166,28 +168,38 @@ static bool lws_in_use(const ubii_linux_port *port)
     return port->lws_connections > 0;
 }
 
+static void drain_wake(ubii_linux_port *port)
+{
+    uint64_t count;
+    if (read(port->wake_fd, &count, sizeof count) < 0) {
+        return; /* EAGAIN: nobody woke the port */
+    }
+}
+
 static ubii_status wait_for_io(void *context, int timeout_ms)
 {
     ubii_linux_port *port = context;
     if (port->lws != NULL && lws_in_use(port)) {
+        /* The wake fd is adopted into lws, whose callback drains it. */
         ubii__lws_service(port, zmq_message_waiting(port) ? 0 : timeout_ms);
         return UBII_OK;
     }
-    zmq_pollitem_t items[2 * UBII_CHANNEL_COUNT];
+    zmq_pollitem_t items[2 * UBII_CHANNEL_COUNT + 1];
     int count = 0;
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
         if (port->channels[i].kind == TRANSPORT_ZMQ) {
             count += ubii__zmq_poll_items(&port->channels[i], items + count);
         }
     }
-    if (count == 0) {
-        if (timeout_ms > 0) {
-            poll(NULL, 0, timeout_ms);
-        }
-        return UBII_OK;
-    }
+    zmq_pollitem_t *wake = &items[count++];
+    memset(wake, 0, sizeof *wake);
+    wake->fd = port->wake_fd;
+    wake->events = ZMQ_POLLIN;
     if (zmq_poll(items, count, timeout_ms) < 0 && zmq_errno() != EINTR) {
         return UBII_ERR_TRANSPORT;
+    }
+    if (wake->revents & ZMQ_POLLIN) {
+        drain_wake(port);
     }
     return UBII_OK;
 }
@@ -206,7 +218,11 @@ static int poll_fds(void *context, ubii_pollfd *fds, int capacity)
         int room = capacity > count ? capacity - count : 0;
         count += ubii__lws_fds(port, fds != NULL ? fds + count : NULL, room);
     }
-    return count;
+    if (fds != NULL && count < capacity) {
+        fds[count].fd = port->wake_fd;
+        fds[count].events = POLLIN;
+    }
+    return count + 1;
 }
 
 static uint64_t monotonic_ms(void *context)
@@ -255,8 +271,14 @@ ubii_status ubii_linux_port_create(ubii_linux_port **result, const ubii_linux_po
     if (port->options.max_message_size == 0) {
         port->options.max_message_size = DEFAULT_MAX_MESSAGE_SIZE;
     }
+    port->wake_fd = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+    if (port->wake_fd < 0) {
+        free(port);
+        return UBII_ERR_TRANSPORT;
+    }
     port->zmq_context = zmq_ctx_new();
     if (port->zmq_context == NULL) {
+        close(port->wake_fd);
         free(port);
         return UBII_ERR_TRANSPORT;
     }
@@ -284,7 +306,20 @@ void ubii_linux_port_destroy(ubii_linux_port *port)
     }
     ubii__lws_destroy(port);
     zmq_ctx_term(port->zmq_context);
+    close(port->wake_fd);
     free(port);
+}
+
+void ubii_linux_port_wake(ubii_linux_port *port)
+{
+    if (port == NULL) {
+        return;
+    }
+    /* An eventfd write is async-signal- and thread-safe; a counter already non-zero stays so. */
+    uint64_t one = 1;
+    if (write(port->wake_fd, &one, sizeof one) < 0) {
+        return; /* EAGAIN: the counter is saturated, so a wait ends anyway */
+    }
 }
 
 const char *ubii_linux_port_last_error(const ubii_linux_port *port)

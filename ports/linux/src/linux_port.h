@@ -87,6 +87,7 @@ struct ubii_linux_port {
     int lws_connections;   /* live WebSocket/HTTP connections, closing ones included */
     size_t lws_bytes_read; /* handed over by libwebsockets in the current service pass */
     char last_error[256];
+    int wake_fd; /* eventfd: ubii_linux_port_wake() makes it readable, ending a wait */
 };
 
 /* lws_channel.c */

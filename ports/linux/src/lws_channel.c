@@ -364,6 +364,7 @@ static const struct lws_protocols protocols[] = {
     {"ubii-http", on_http, 0, RX_CHUNK, 0, NULL, 0},
     {"ubii-zmq-wakeup", on_zmq_wakeup, 0, 0, 0, NULL, 0},
     {"ubii-zmtp", ubii__lws_on_zmtp, 0, RX_CHUNK, 0, NULL, 0},
+    {"ubii-wake", ubii__lws_on_wake, 0, 0, 0, NULL, 0},
     {NULL, NULL, 0, 0, 0, NULL, 0}};
 
 bool ubii__lws_start(ubii_linux_port *port)
@@ -391,6 +392,7 @@ bool ubii__lws_start(ubii_linux_port *port)
         return false;
     }
     port->vhost = lws_get_vhost_by_name(port->lws, "default");
+    ubii__lws_adopt_wake(port);
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
         if (port->channels[i].kind == TRANSPORT_ZMQ) {
             ubii__lws_adopt_zmq(port, port->channels[i].zmq.socket);

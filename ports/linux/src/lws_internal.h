@@ -76,6 +76,10 @@ bool ubii__lws_append(lws_connection *connection, const void *in, size_t len, si
 /* Queues a copy of a received message for the node. */
 void ubii__lws_deliver(lws_connection *connection, lws_channel *ch, const uint8_t *data,
                        size_t size, unsigned flags);
+/* lws_wake.c: the port's wake-up eventfd as an lws raw file, drained when it fires. */
+int ubii__lws_on_wake(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+                      size_t len);
+void ubii__lws_adopt_wake(ubii_linux_port *port);
 /* Writes what the outbox holds, as much as the socket takes now; -1 to end the connection. */
 int ubii__lws_write_outbox(lws_connection *connection, lws_channel *ch, struct lws *wsi);
 /* A new connection record for a channel, counted as live. */

@@ -65,6 +65,11 @@ typedef struct ubii_linux_port_options {
     ubii_linux_zmq_engine zmq_engine;
 } ubii_linux_port_options;
 
+/* Ends the port's current or next wait at once: the one call that may come from any thread (or a
+ * signal handler) while another polls the node, e.g. a worker thread whose result is ready. The
+ * wake-up is an eventfd among the port's pollfds, so an external loop wakes too. */
+UBII_API void ubii_linux_port_wake(ubii_linux_port *port);
+
 /* A short English description of the port's last transport failure ("" if none). */
 UBII_API const char *ubii_linux_port_last_error(const ubii_linux_port *port);
 
