@@ -40,6 +40,11 @@ std::string LinuxPortOwner::last_error() const
     return ubii_linux_port_last_error(handle_->port);
 }
 
+void LinuxPortOwner::wake() noexcept
+{
+    ubii_linux_port_wake(handle_->port);
+}
+
 #else
 
 struct LinuxPortOwner::Handle {
@@ -53,6 +58,10 @@ LinuxPortOwner::LinuxPortOwner(const NodeOptions &)
 std::string LinuxPortOwner::last_error() const
 {
     return {};
+}
+
+void LinuxPortOwner::wake() noexcept
+{
 }
 
 #endif

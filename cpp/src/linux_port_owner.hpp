@@ -27,6 +27,8 @@ class LinuxPortOwner
     }
     // The port's last transport failure ("" if none).
     std::string last_error() const;
+    // Ends a wait of the port's poll at once; callable from any thread.
+    void wake() noexcept;
 
   private:
     struct Handle;

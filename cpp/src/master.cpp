@@ -77,12 +77,12 @@ Call<Success> Master::deregister_device(const std::string &device_id)
     return call<Success>(std::move(request));
 }
 
-Call<ProcessingModuleList> Master::processing_modules(const ProcessingModuleList &filter)
+Call<ProcessingModuleSpecList> Master::processing_modules(const ProcessingModuleSpecList &filter)
 {
     ServiceRequest request = request_for(service_topics::processing_module_list);
     if (filter.elements_size() > 0)
         *request.mutable_processing_module_list() = filter;
-    return call<ProcessingModuleList>(std::move(request));
+    return call<ProcessingModuleSpecList>(std::move(request));
 }
 
 Call<SessionList> Sessions::list()

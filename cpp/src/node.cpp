@@ -4,50 +4,13 @@
 #include <cstring>
 
 #include "node_core.hpp"
+#include "publish.hpp"
 #include "ubii/image.h"
 #include "ubii/master.hpp"
 
 namespace ubii
 {
 
-namespace
-{
-
-// A topic as the C API takes it: NUL-terminated; a view that is not is copied into a buffer of
-// the node's topic limit.
-class TopicText
-{
-  public:
-    explicit TopicText(TopicRef topic)
-    {
-        const std::string_view view = topic.view();
-        ok_ = !view.empty() && view.size() < sizeof copy_;
-        if (!ok_)
-            return;
-        if (topic.terminated()) {
-            text_ = view.data();
-        } else {
-            std::memcpy(copy_, view.data(), view.size());
-            copy_[view.size()] = '\0';
-            text_ = copy_;
-        }
-    }
-    bool ok() const noexcept
-    {
-        return ok_;
-    }
-    const char *c_str() const noexcept
-    {
-        return text_;
-    }
-
-  private:
-    bool ok_ = false;
-    const char *text_ = "";
-    char copy_[UBII_MAX_TOPIC_SIZE];
-};
-
-} // namespace
 
 std::string_view to_string(ConnectionState state) noexcept
 {
@@ -281,84 +244,51 @@ void Node::throw_unless_ok(Status status, std::string_view topic) const
         throw_status(status, "cannot publish on " + std::string(topic));
 }
 
-#define UBII_CPP_PUBLISH_SCALAR(method, type, c_function)                                          \
+#define UBII_CPP_PUBLISH_FORWARD(method, type)                                                    \
     Status Node::method(TopicRef topic, type value) noexcept                                       \
     {                                                                                              \
-        const TopicText text(topic);                                                               \
-        if (!text.ok())                                                                            \
-            return Status::invalid_argument;                                                       \
-        return to_status(c_function(core_->c_node(), text.c_str(), value));                        \
+        return detail::method(*core_, topic, value);                                               \
     }
-UBII_CPP_PUBLISH_SCALAR(publish_double, double, ubii_publish_double)
-UBII_CPP_PUBLISH_SCALAR(publish_float, float, ubii_publish_float)
-UBII_CPP_PUBLISH_SCALAR(publish_int32, std::int32_t, ubii_publish_int32)
-UBII_CPP_PUBLISH_SCALAR(publish_bool, bool, ubii_publish_bool)
-#undef UBII_CPP_PUBLISH_SCALAR
-
-Status Node::publish_string(TopicRef topic, std::string_view value) noexcept
-{
-    const TopicText text(topic);
-    if (!text.ok())
-        return Status::invalid_argument;
-    return to_status(
-        ubii_publish_string(core_->c_node(), text.c_str(), value.data(), value.size()));
-}
-
-Status Node::publish_image(TopicRef topic, const ImageView &image) noexcept
-{
-    const TopicText text(topic);
-    if (!text.ok())
-        return Status::invalid_argument;
-    return to_status(ubii_publish_image(
-        core_->c_node(), text.c_str(), image.width, image.height,
-        static_cast<ubii_dataStructure_Image2D_DataFormat>(image.format), image.data, image.size));
-}
+UBII_CPP_PUBLISH_FORWARD(publish_double, double)
+UBII_CPP_PUBLISH_FORWARD(publish_float, float)
+UBII_CPP_PUBLISH_FORWARD(publish_int32, std::int32_t)
+UBII_CPP_PUBLISH_FORWARD(publish_bool, bool)
+UBII_CPP_PUBLISH_FORWARD(publish_string, std::string_view)
+UBII_CPP_PUBLISH_FORWARD(publish_image, const ImageView &)
+UBII_CPP_PUBLISH_FORWARD(publish_value, const Value &)
+#undef UBII_CPP_PUBLISH_FORWARD
 
 Status Node::publish_message(TopicRef topic, RecordType type,
                              const google::protobuf::MessageLite &message) noexcept
 {
-    if (type == RecordType::IMAGE2D) { // the pixels go to the transport without a copy of ours
-        const auto &image = static_cast<const Image2D &>(message);
-        return publish_image(topic,
-                             ImageView{image.width(), image.height(), image.data_format(),
-                                       reinterpret_cast<const std::uint8_t *>(image.data().data()),
-                                       image.data().size()});
-    }
-    const TopicText text(topic);
-    if (!text.ok())
-        return Status::invalid_argument;
-    std::string &bytes = core_->encode_buffer();
-    try {
-        if (!message.SerializeToString(&bytes))
-            return Status::encode;
-    } catch (...) { // allocation
-        return Status::encode;
-    }
-    return to_status(
-        ubii_publish_encoded(core_->c_node(), text.c_str(), static_cast<ubii_record_type>(type),
-                             reinterpret_cast<const std::uint8_t *>(bytes.data()), bytes.size()));
+    return detail::publish_message(*core_, topic, type, message);
 }
 
-Status Node::publish_value(TopicRef topic, const Value &value) noexcept
+RunningModule Node::run(std::unique_ptr<ProcessingModule> module, const Wiring &wiring)
 {
-    const RecordType type = value.type();
-    return value.visit([&](const auto &held) -> Status {
-        using T = std::decay_t<decltype(held)>;
-        if constexpr (std::is_same_v<T, std::monostate>)
-            return Status::invalid_argument;
-        else if constexpr (std::is_same_v<T, double>)
-            return publish_double(topic, held);
-        else if constexpr (std::is_same_v<T, float>)
-            return publish_float(topic, held);
-        else if constexpr (std::is_same_v<T, std::int32_t>)
-            return publish_int32(topic, held);
-        else if constexpr (std::is_same_v<T, bool>)
-            return publish_bool(topic, held);
-        else if constexpr (std::is_same_v<T, std::string>)
-            return publish_string(topic, held);
-        else
-            return publish_message(topic, type, held);
-    });
+    std::string id = core_->run_module(std::move(module), wiring);
+    return RunningModule(core_, std::move(id));
+}
+
+Scheduler &Node::scheduler() noexcept
+{
+    return core_->scheduler();
+}
+
+int Node::pollfds(ubii_pollfd *fds, int capacity) noexcept
+{
+    return ubii_node_pollfds(core_->c_node(), fds, capacity);
+}
+
+std::optional<std::chrono::nanoseconds> Node::next_timeout() const
+{
+    std::optional<std::chrono::nanoseconds> timeout;
+    const int core_timeout = ubii_node_next_timeout_ms(core_->c_node());
+    if (core_timeout >= 0)
+        timeout = std::chrono::milliseconds(core_timeout);
+    if (const auto due = core_->until_due())
+        timeout = timeout ? std::min(*timeout, *due) : *due;
+    return timeout;
 }
 
 Call<ServiceReply> Node::call(const ServiceRequest &request, std::chrono::milliseconds timeout)

@@ -1,5 +1,7 @@
 #include "node_core.hpp"
 
+#include "publish.hpp"
+
 #include <algorithm>
 #include <type_traits>
 #include <cstring>
@@ -123,6 +125,14 @@ NodeCore::NodeCore(NodeOptions options, const ubii_port *port)
     check(ubii_node_init(node_.get(), sizeof(ubii_node), &config, port_),
           "cannot set the node up (service URL \"" + options_.service_url + "\", name \"" +
               options_.name + "\")");
+    scheduler_ = std::make_unique<Scheduler>();
+    scheduler_->on_output([this](const ProcessingModule &module, std::string_view output,
+                                 const Value &value) { return publish_output(module, output, value); });
+    scheduler_->on_error([this](Status status, std::string_view detail) {
+        report(status, std::string(detail));
+    });
+    if (owned_port_)
+        scheduler_->set_waker([port = owned_port_.get()] { port->wake(); });
     protocol_.on_every_transition([this](ConnectionTransition &transition) {
         if (state_handler_)
             state_handler_(transition.from(), transition.to(), last_reason_);
@@ -142,6 +152,8 @@ NodeCore::~NodeCore()
     state_handler_ = nullptr;
     error_handler_ = nullptr;
     waiting_.clear();
+    scheduler_.reset(); // joins worker threads; their modules' on_destroyed runs here
+    module_wirings_.clear();
     if (ubii_node_state(node_.get()) != UBII_STATE_STOPPED)
         ubii_node_stop_wait(node_.get(), milliseconds_int(options_.stop_timeout));
     // The port (owned_port_) is destroyed after the node is stopped: members go in reverse order.
@@ -166,11 +178,49 @@ void NodeCore::poll(std::chrono::milliseconds timeout)
     if (poll_depth_ > 0)
         throw StateError("ubii::Node::poll called from inside one of the node's callbacks");
     ++poll_depth_;
-    const ubii_status status = ubii_node_poll(node_.get(), milliseconds_int(timeout));
-    after_poll();
+    try {
+        wait_for_io(timeout);
+    } catch (...) {
+        --poll_depth_;
+        throw;
+    }
     --poll_depth_;
+}
+
+// Waits for I/O no longer than the next due pass: the port's poll to within the last millisecond
+// (its timeout is whole milliseconds), then a sleep to the deadline itself, so that frequency
+// passes start on time rather than up to a millisecond late.
+void NodeCore::wait_for_io(std::chrono::milliseconds timeout)
+{
+    using std::chrono::milliseconds;
+    std::chrono::nanoseconds wait = timeout;
+    const std::optional<std::chrono::nanoseconds> due = until_due();
+    const bool pass_first = due && *due < wait;
+    if (pass_first)
+        wait = *due;
+    const milliseconds port_wait = pass_first ? std::chrono::floor<milliseconds>(wait) : timeout;
+    const ubii_status status = ubii_node_poll(node_.get(), milliseconds_int(port_wait));
+    after_poll();
     if (status != UBII_OK)
         throw_status(to_status(status), "ubii_node_poll");
+    if (pass_first) {
+        const std::optional<Clock::time_point> next = scheduler_->next_due();
+        const Clock::time_point now = scheduler_->clock().now();
+        if (next && *next > now && *next - now <= milliseconds(1))
+            scheduler_->clock().sleep_until(*next);
+    }
+    if (scheduler_->ids().empty())
+        return;
+    guard("the processing module scheduler", [this] { scheduler_->run_due(); });
+    retired_.clear();
+}
+
+std::optional<std::chrono::nanoseconds> NodeCore::until_due() const
+{
+    const std::optional<Clock::time_point> due = scheduler_->next_due();
+    if (!due)
+        return std::nullopt;
+    return std::max(std::chrono::nanoseconds(0), *due - scheduler_->clock().now());
 }
 
 bool NodeCore::stop_wait(std::chrono::milliseconds timeout)
@@ -365,6 +415,118 @@ void NodeCore::queue_call(const ServiceRequest &request, std::chrono::millisecon
         throw_status(to_status(status), "cannot call " + request.topic());
     const PendingCall *key = pending.get();
     calls_.emplace(key, std::move(pending));
+}
+
+std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const Wiring &wiring)
+{
+    if (!module)
+        throw InvalidArgument("Node::run without a module");
+    const ModuleDescription &description = module->description();
+    const auto declared = [](const std::vector<ModuleIO> &ios, const std::string &name) {
+        return std::any_of(ios.begin(), ios.end(),
+                           [&name](const ModuleIO &io) { return io.name == name; });
+    };
+    ModuleWiring wired;
+    for (const Wiring::Input &input : wiring.inputs()) {
+        if (!declared(description.inputs, input.input))
+            throw NotFound("processing module \"" + description.name + "\" has no input \"" +
+                           input.input + "\" to wire to " + input.topic);
+    }
+    for (const Wiring::Output &output : wiring.outputs()) {
+        if (!declared(description.outputs, output.output))
+            throw NotFound("processing module \"" + description.name + "\" has no output \"" +
+                           output.output + "\" to wire to " + output.topic);
+        wired.outputs[output.output] = output.topic;
+    }
+    std::vector<std::shared_ptr<const std::regex>> identities;
+    for (const Wiring::Input &input : wiring.inputs()) {
+        if (!input.mux || input.identity_pattern.empty())
+            continue;
+        try {
+            identities.push_back(std::make_shared<const std::regex>(input.identity_pattern));
+        } catch (const std::regex_error &error) {
+            throw InvalidArgument("identity pattern \"" + input.identity_pattern + "\" of input \"" +
+                                  input.input + "\": " + error.what());
+        }
+    }
+
+    const std::string id = scheduler_->add(std::move(module));
+    try {
+        std::size_t next_identity = 0;
+        for (const Wiring::Input &input : wiring.inputs()) {
+            if (!input.mux) {
+                wired.subscriptions.push_back(
+                    subscribe(input.topic, false, [this, id, name = input.input](const Record &record) {
+                        scheduler_->feed(id, name, std::make_shared<const Record>(record));
+                    }));
+                continue;
+            }
+            std::shared_ptr<const std::regex> identity;
+            if (!input.identity_pattern.empty())
+                identity = identities[next_identity++];
+            wired.subscriptions.push_back(subscribe(
+                input.topic, true, [this, id, input, identity](const Record &record) {
+                    feed_mux(id, input, identity.get(), record);
+                }));
+        }
+        module_wirings_[id] = std::move(wired);
+        scheduler_->start(id);
+    } catch (...) {
+        for (std::uint64_t subscription : wired.subscriptions)
+            unsubscribe(subscription);
+        module_wirings_.erase(id);
+        scheduler_->remove(id);
+        throw;
+    }
+    return id;
+}
+
+void NodeCore::feed_mux(const std::string &id, const Wiring::Input &input,
+                        const std::regex *identity, const Record &record)
+{
+    const ProcessingModule &module = scheduler_->module(id);
+    const auto &inputs = module.description().inputs;
+    const auto io = std::find_if(inputs.begin(), inputs.end(),
+                                 [&input](const ModuleIO &candidate) { return candidate.name == input.input; });
+    if (io != inputs.end() && io->type() != RecordType::NONE && io->type() != record.type())
+        return; // TopicMux.data_type: a filter, not an error
+    std::string topic(record.topic());
+    std::string name = topic;
+    if (identity != nullptr) {
+        std::smatch match;
+        if (std::regex_search(topic, match, *identity))
+            name = match.size() > 1 ? match[1].str() : match[0].str();
+    }
+    scheduler_->feed_muxed(id, input.input, std::move(name), std::make_shared<const Record>(record));
+}
+
+Status NodeCore::publish_output(const ProcessingModule &module, std::string_view output,
+                                const Value &value) noexcept
+{
+    const auto wiring = module_wirings_.find(module.id());
+    if (wiring == module_wirings_.end())
+        return Status::ok;
+    const auto topic = wiring->second.outputs.find(output);
+    if (topic == wiring->second.outputs.end())
+        return Status::ok; // not wired: not published, as Wiring says
+    return publish_value(*this, topic->second, value);
+}
+
+void NodeCore::remove_module(const std::string &id) noexcept
+{
+    const auto wiring = module_wirings_.find(id);
+    if (wiring != module_wirings_.end()) {
+        for (std::uint64_t subscription : wiring->second.subscriptions)
+            unsubscribe(subscription);
+        module_wirings_.erase(wiring);
+    }
+    if (scheduler_ && scheduler_->contains(id)) {
+        try {
+            scheduler_->remove(id);
+        } catch (...) {
+            report_exception("removing processing module " + id, std::current_exception());
+        }
+    }
 }
 
 bool NodeCore::usable(Behaviour behaviour) const noexcept

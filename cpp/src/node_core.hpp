@@ -7,14 +7,19 @@
 
 #include <cstdint>
 #include <functional>
+#include <chrono>
 #include <map>
 #include <memory>
+#include <optional>
+#include <regex>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "linux_port_owner.hpp"
 #include "ubii/node.hpp"
+#include "ubii/running_module.hpp"
+#include "ubii/scheduler.hpp"
 #include "ubii/ubii.h"
 
 namespace ubii::detail
@@ -68,6 +73,18 @@ class NodeCore
                     std::function<void(Result<ServiceReply>)> resolve);
 
     void when_usable(Behaviour behaviour, std::function<void()> action);
+
+    Scheduler &scheduler() noexcept
+    {
+        return *scheduler_;
+    }
+    // Adds `module` to the scheduler, subscribes its wired inputs and starts it; what fails
+    // undoes the rest and propagates.
+    std::string run_module(std::unique_ptr<ProcessingModule> module, const Wiring &wiring);
+    // Cancels the module's subscriptions and destroys it; no effect for an unknown id.
+    void remove_module(const std::string &id) noexcept;
+    // How long poll() may wait before a pass is due (none: nothing is due).
+    std::optional<std::chrono::nanoseconds> until_due() const;
     bool usable(Behaviour behaviour) const noexcept;
 
     ConnectionProtocol &protocol() noexcept
@@ -104,6 +121,16 @@ class NodeCore
     void settle();
     void after_poll();
     void report_exception(const std::string &where, std::exception_ptr error) noexcept;
+    void wait_for_io(std::chrono::milliseconds timeout);
+    Status publish_output(const ProcessingModule &module, std::string_view output,
+                          const Value &value) noexcept;
+    void feed_mux(const std::string &id, const Wiring::Input &input, const std::regex *identity,
+                  const Record &record);
+
+    struct ModuleWiring {
+        std::vector<std::uint64_t> subscriptions;
+        std::map<std::string, std::string, std::less<>> outputs;
+    };
 
     NodeOptions options_;
     std::unique_ptr<LinuxPortOwner> owned_port_;
@@ -119,6 +146,9 @@ class NodeCore
     std::map<const PendingCall *, std::unique_ptr<PendingCall>> calls_;
     std::vector<std::pair<Behaviour, std::function<void()>>> waiting_;
     std::string encode_buffer_;
+    std::map<std::string, ModuleWiring, std::less<>> module_wirings_;
+    // Destroyed first (~NodeCore): modules end while the node they publish on still stands.
+    std::unique_ptr<Scheduler> scheduler_;
     std::uint64_t callback_errors_ = 0;
     std::uint64_t type_mismatches_ = 0;
     int poll_depth_ = 0;

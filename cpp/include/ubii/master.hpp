@@ -87,7 +87,7 @@ class Master : public detail::ServiceGroup
     // Deregisters the device with `device_id` of this client.
     Call<Success> deregister_device(const std::string &device_id);
     // The processing module specs the master knows (its database and every client's).
-    Call<ProcessingModuleList> processing_modules(const ProcessingModuleList &filter = {});
+    Call<ProcessingModuleSpecList> processing_modules(const ProcessingModuleSpecList &filter = {});
 };
 
 class Sessions : public detail::ServiceGroup

@@ -31,6 +31,7 @@
 #include "ubii/messages/devices/device.pb.h"
 #include "ubii/messages/general/error.pb.h"
 #include "ubii/messages/general/success.pb.h"
+#include "ubii/messages/processing/lockstepProcessing.pb.h"
 #include "ubii/messages/processing/processingModule.pb.h"
 #include "ubii/messages/servers/server.pb.h"
 #include "ubii/messages/services/service.pb.h"
@@ -79,8 +80,11 @@ using ServiceRequest = services::ServiceRequest;
 using ServiceReply = services::ServiceReply;
 using Session = sessions::Session;
 using SessionList = sessions::SessionList;
-using ProcessingModule = processing::ProcessingModule;
-using ProcessingModuleList = processing::ProcessingModuleList;
+using ProcessingModuleSpec = processing::ProcessingModule; // ubii::ProcessingModule is the class
+using ProcessingModuleSpecList = processing::ProcessingModuleList;
+using ModuleIOSpec = processing::ModuleIO;
+using LockstepProcessingRequest = processing::LockstepProcessingRequest;
+using LockstepProcessingReply = processing::LockstepProcessingReply;
 using TopicDataRecord = topicData::TopicDataRecord;
 
 Vector2 vector2(double x, double y);

@@ -39,6 +39,8 @@
 #include "ubii/port.h"
 #include "ubii/protocol.hpp"
 #include "ubii/record.hpp"
+#include "ubii/running_module.hpp"
+#include "ubii/scheduler.hpp"
 #include "ubii/service_call.hpp"
 
 struct ubii_node;
@@ -277,6 +279,26 @@ class Node
     {
         return publish_value(record.topic(), record.value());
     }
+
+    // ---- processing modules -------------------------------------------------------------------
+    // Runs `module` on this node: on_created, its wired inputs subscribed, started. Passes run
+    // inside poll(), which waits no longer than the next one is due; worker passes finish on their
+    // thread and wake the poll (on the node's own Linux port; on a port of the application's, set
+    // a waker with scheduler().set_waker or poll at least every millisecond while one runs).
+    // What on_created throws propagates; ubii::NotFound for a wiring naming an unknown input or
+    // output.
+    RunningModule run(std::unique_ptr<ProcessingModule> module, const Wiring &wiring = {});
+    // The node's scheduler: module timing, lockstep steps, modules added without wiring.
+    Scheduler &scheduler() noexcept;
+
+    // ---- external event loops -----------------------------------------------------------------
+    // The file descriptors to wait on (see ubii_node_pollfds); returns how many there are, which
+    // may exceed `capacity`.
+    int pollfds(ubii_pollfd *fds, int capacity) noexcept;
+    // How long an external loop may wait on those descriptors before calling poll(0ms): the
+    // earlier of the core's next timer and the next due pass (never negative); none: until a
+    // descriptor is ready.
+    std::optional<std::chrono::nanoseconds> next_timeout() const;
 
     // ---- services -----------------------------------------------------------------------------
     // Any service: the reply as it came (an error reply resolves the call with ServiceError).

@@ -1,0 +1,109 @@
+#include "ubii/running_module.hpp"
+
+#include "node_core.hpp"
+
+namespace ubii
+{
+
+Wiring &Wiring::input(std::string input, std::string topic)
+{
+    inputs_.push_back(Input{std::move(input), std::move(topic), false, {}});
+    return *this;
+}
+
+Wiring &Wiring::mux_input(std::string input, std::string topic_regex,
+                          std::string identity_pattern)
+{
+    inputs_.push_back(
+        Input{std::move(input), std::move(topic_regex), true, std::move(identity_pattern)});
+    return *this;
+}
+
+Wiring &Wiring::output(std::string output, std::string topic)
+{
+    outputs_.push_back(Output{std::move(output), std::move(topic)});
+    return *this;
+}
+
+RunningModule::RunningModule(std::weak_ptr<detail::NodeCore> node, std::string id)
+    : node_(std::move(node)), id_(std::move(id))
+{
+}
+
+RunningModule::RunningModule(RunningModule &&other) noexcept
+    : node_(std::move(other.node_)), id_(std::move(other.id_))
+{
+    other.node_.reset();
+}
+
+RunningModule &RunningModule::operator=(RunningModule &&other) noexcept
+{
+    if (this != &other) {
+        remove();
+        node_ = std::move(other.node_);
+        id_ = std::move(other.id_);
+        other.node_.reset();
+    }
+    return *this;
+}
+
+RunningModule::~RunningModule()
+{
+    remove();
+}
+
+std::shared_ptr<detail::NodeCore> RunningModule::lock() const
+{
+    auto node = node_.lock();
+    if (!node || !node->scheduler().contains(id_))
+        throw StateError("processing module " + id_ + " is no longer on its node");
+    return node;
+}
+
+bool RunningModule::active() const noexcept
+{
+    auto node = node_.lock();
+    return node && node->scheduler().contains(id_);
+}
+
+ProcessingStatus RunningModule::status() const noexcept
+{
+    auto node = node_.lock();
+    if (!node || !node->scheduler().contains(id_))
+        return ProcessingStatus::destroyed;
+    return node->scheduler().module(id_).status();
+}
+
+Timing RunningModule::timing() const
+{
+    return lock()->scheduler().timing(id_);
+}
+
+ProcessingModule &RunningModule::module() const
+{
+    return lock()->scheduler().module(id_);
+}
+
+void RunningModule::start()
+{
+    lock()->scheduler().start(id_);
+}
+
+void RunningModule::halt()
+{
+    lock()->scheduler().halt(id_);
+}
+
+void RunningModule::remove() noexcept
+{
+    if (auto node = node_.lock())
+        node->remove_module(id_);
+    node_.reset();
+}
+
+void RunningModule::release() noexcept
+{
+    node_.reset();
+}
+
+} // namespace ubii
