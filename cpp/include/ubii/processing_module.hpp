@@ -97,6 +97,17 @@ std::string_view mode_name(const ProcessingMode &mode) noexcept;
 enum class Executor { loop, worker };
 
 struct ModuleDescription {
+    ModuleDescription() = default;
+    ModuleDescription(std::string module_name, std::string module_description,
+                      std::vector<ModuleIO> module_inputs, std::vector<ModuleIO> module_outputs,
+                      ProcessingMode processing_mode = Frequency{},
+                      Executor pass_executor = Executor::loop)
+        : name(std::move(module_name)), description(std::move(module_description)),
+          inputs(std::move(module_inputs)), outputs(std::move(module_outputs)),
+          mode(processing_mode), executor(pass_executor)
+    {
+    }
+
     std::string name;
     std::string description;
     std::vector<ModuleIO> inputs;
