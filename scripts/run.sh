@@ -6,6 +6,7 @@
 #   engine_tick  a 60 Hz frame loop driving a node through its file descriptors
 #   services     the master's services, topics and clients
 #   pubsub_cpp, services_cpp   the same two in C++ (the C++ layer, cpp/)
+#   processing_module_cpp      a processing module wired to topics, with its timing metric
 #
 #   scripts/run.sh             build tree in ./build/run
 #   UBII_BUILD_DIR=DIR ...     build tree below DIR instead
@@ -30,7 +31,8 @@ exec "$root/scripts/private-net.sh" bash -c '
               "engine_tick tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 3" \
               "services tcp://127.0.0.1:8101 tcp://127.0.0.1:8103" \
               "pubsub_cpp tcp://127.0.0.1:8101 ws://127.0.0.1:8104 2" \
-              "services_cpp tcp://127.0.0.1:8101 tcp://127.0.0.1:8103"; do
+              "services_cpp tcp://127.0.0.1:8101 tcp://127.0.0.1:8103" \
+              "processing_module_cpp tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 3"; do
     echo "=== $step"
     "$2"/examples/$step
   done
