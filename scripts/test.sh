@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The test command: installs what is missing (Debian packages, npm packages), builds libubii three
 # times (Linux port plain, Linux port with AddressSanitizer + UndefinedBehaviorSanitizer, both with
-# the OCR pipelines; embedded port with both sanitizers) and runs the whole suite on each, inside a
+# the OCR pipelines; embedded port with both sanitizers) and runs the whole suite on each (and the
+# C++ layer's threaded parts under ThreadSanitizer), inside a
 # private network namespace where a real master is started and stopped by the tests. The embedded
 # configuration's suite also builds and tests the reduced "topics" schema (tests/schema).
 #
@@ -17,15 +18,21 @@ started=$SECONDS
 
 "$root/scripts/bootstrap.sh"
 
+# run_configuration NAME CMAKE_ARGS...; with TARGETS and TESTS set, builds only those targets and
+# runs only the tests matching that regex (and the fixtures they need).
 run_configuration() {
   local name=$1; shift
   local dir="$build_root/$name"
   echo "=== $name: configure and build in $dir"
   cmake -S "$root" -B "$dir" -DUBII_BUILD_TESTS=ON -DUBII_BUILD_EXAMPLES=ON "$@" >"$dir.configure.log" 2>&1 ||
     { cat "$dir.configure.log"; return 1; }
-  cmake --build "$dir" -j "$jobs"
+  local targets=() selection=()
+  for target in ${TARGETS:-}; do targets+=(--target "$target"); done
+  [ -n "${TESTS:-}" ] && selection=(-R "$TESTS")
+  cmake --build "$dir" -j "$jobs" "${targets[@]}"
   echo "=== $name: tests"
-  "$root/scripts/private-net.sh" ctest --test-dir "$dir" --output-on-failure -j "$jobs" --timeout 300
+  "$root/scripts/private-net.sh" ctest --test-dir "$dir" --output-on-failure -j "$jobs" --timeout 300 \
+    "${selection[@]}"
 }
 
 mkdir -p "$build_root"
@@ -34,4 +41,8 @@ run_configuration asan -DCMAKE_BUILD_TYPE=Debug -DUBII_SANITIZE=ON -DUBII_WITH_O
 # The integration suite's largest message (an image) needs more than the 2 KB default.
 run_configuration embedded -DCMAKE_BUILD_TYPE=Debug -DUBII_SANITIZE=ON -DUBII_PORT=embedded \
   -DUBII_EMBEDDED_MAX_MESSAGE=16384
+# ThreadSanitizer for what runs threads: the processing modules' worker executor (C++ layer).
+TARGETS="ubii_npm_packages cpp_scheduler_test cpp_processing_module_test" \
+TESTS="SchedulerTest|ProcessingModule|TimingMetric" \
+  run_configuration tsan -DCMAKE_BUILD_TYPE=Debug -DUBII_SANITIZE_THREAD=ON
 echo "=== all configurations passed in $((SECONDS - started)) s"

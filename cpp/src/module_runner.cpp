@@ -180,12 +180,12 @@ bool ModuleRunner::accepts(const Slot &slot, const Record &record)
     if (wanted == RecordType::NONE || record.type() == wanted)
         return true;
     ++type_mismatches_;
-    report(Status::wrong_type, who() + ": input \"" + slot.io->name + "\" takes " +
-                                   std::string(message_format(wanted)) + ", the record on \"" +
-                                   std::string(record.topic()) + "\" holds " +
-                                   (record.type() == RecordType::NONE
-                                        ? std::string("nothing")
-                                        : std::string(message_format(record.type()))));
+    report(Status::wrong_type,
+           who() + ": input \"" + slot.io->name + "\" takes " +
+               std::string(message_format(wanted)) + ", the record on \"" +
+               std::string(record.topic()) + "\" holds " +
+               (record.type() == RecordType::NONE ? std::string("nothing")
+                                                  : std::string(message_format(record.type()))));
     return false;
 }
 
@@ -207,10 +207,12 @@ void ModuleRunner::feed_muxed(std::string_view input, std::string identity,
     if (!record || !accepts(target, *record))
         return;
     const std::string_view topic = record->topic();
-    auto entry = std::find_if(target.muxed.begin(), target.muxed.end(),
-                              [topic](const MuxEntry &candidate) { return candidate.topic == topic; });
+    auto entry =
+        std::find_if(target.muxed.begin(), target.muxed.end(),
+                     [topic](const MuxEntry &candidate) { return candidate.topic == topic; });
     if (entry == target.muxed.end()) {
-        target.muxed.push_back(MuxEntry{std::string(topic), MuxedRecord{std::move(identity), nullptr}});
+        target.muxed.push_back(
+            MuxEntry{std::string(topic), MuxedRecord{std::move(identity), nullptr}});
         entry = std::prev(target.muxed.end());
     } else if (entry->fresh) {
         ++inputs_dropped_;
@@ -247,8 +249,8 @@ std::optional<Clock::time_point> ModuleRunner::next_due_at(Clock::time_point now
         return std::nullopt;
     const ProcessingMode &mode = module_->description().mode;
     if (std::holds_alternative<Frequency>(mode))
-        return start_ + std::chrono::nanoseconds(
-                            std::llround(static_cast<double>(next_tick_) * period_ns_));
+        return start_ +
+               std::chrono::nanoseconds(std::llround(static_cast<double>(next_tick_) * period_ns_));
     if (const auto *trigger = std::get_if<TriggerOnInput>(&mode)) {
         if (!triggered())
             return std::nullopt;
@@ -273,8 +275,8 @@ Pass ModuleRunner::begin_pass(Clock::time_point now, std::optional<std::chrono::
         // The tick whose deadline is the latest one passed; the ones between it and next_tick_
         // were missed while this pass was late.
         const auto deadline = [this](std::uint64_t tick) {
-            return start_ + std::chrono::nanoseconds(
-                                std::llround(static_cast<double>(tick) * period_ns_));
+            return start_ +
+                   std::chrono::nanoseconds(std::llround(static_cast<double>(tick) * period_ns_));
         };
         const double elapsed = static_cast<double>((now - start_).count());
         std::uint64_t tick =
@@ -327,9 +329,9 @@ void ModuleRunner::finish(Finished finished)
         const unsigned limit = module_->description().halt_after_errors;
         if (limit > 0 && errors_in_a_row_ >= limit &&
             module_->status() == ProcessingStatus::processing) {
-            report(Status::callback_threw,
-                   who() + ": halted after " + std::to_string(errors_in_a_row_) +
-                       " passes in a row threw");
+            report(Status::callback_threw, who() + ": halted after " +
+                                               std::to_string(errors_in_a_row_) +
+                                               " passes in a row threw");
             halt();
         }
         return;

@@ -11,7 +11,6 @@
 namespace ubii
 {
 
-
 std::string_view to_string(ConnectionState state) noexcept
 {
     switch (state) {
@@ -244,7 +243,7 @@ void Node::throw_unless_ok(Status status, std::string_view topic) const
         throw_status(status, "cannot publish on " + std::string(topic));
 }
 
-#define UBII_CPP_PUBLISH_FORWARD(method, type)                                                    \
+#define UBII_CPP_PUBLISH_FORWARD(method, type)                                                     \
     Status Node::method(TopicRef topic, type value) noexcept                                       \
     {                                                                                              \
         return detail::method(*core_, topic, value);                                               \

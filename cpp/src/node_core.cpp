@@ -126,11 +126,12 @@ NodeCore::NodeCore(NodeOptions options, const ubii_port *port)
           "cannot set the node up (service URL \"" + options_.service_url + "\", name \"" +
               options_.name + "\")");
     scheduler_ = std::make_unique<Scheduler>();
-    scheduler_->on_output([this](const ProcessingModule &module, std::string_view output,
-                                 const Value &value) { return publish_output(module, output, value); });
-    scheduler_->on_error([this](Status status, std::string_view detail) {
-        report(status, std::string(detail));
-    });
+    scheduler_->on_output(
+        [this](const ProcessingModule &module, std::string_view output, const Value &value) {
+            return publish_output(module, output, value);
+        });
+    scheduler_->on_error(
+        [this](Status status, std::string_view detail) { report(status, std::string(detail)); });
     if (owned_port_)
         scheduler_->set_waker([port = owned_port_.get()] { port->wake(); });
     protocol_.on_every_transition([this](ConnectionTransition &transition) {
@@ -445,8 +446,8 @@ std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const
         try {
             identities.push_back(std::make_shared<const std::regex>(input.identity_pattern));
         } catch (const std::regex_error &error) {
-            throw InvalidArgument("identity pattern \"" + input.identity_pattern + "\" of input \"" +
-                                  input.input + "\": " + error.what());
+            throw InvalidArgument("identity pattern \"" + input.identity_pattern +
+                                  "\" of input \"" + input.input + "\": " + error.what());
         }
     }
 
@@ -455,8 +456,8 @@ std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const
         std::size_t next_identity = 0;
         for (const Wiring::Input &input : wiring.inputs()) {
             if (!input.mux) {
-                wired.subscriptions.push_back(
-                    subscribe(input.topic, false, [this, id, name = input.input](const Record &record) {
+                wired.subscriptions.push_back(subscribe(
+                    input.topic, false, [this, id, name = input.input](const Record &record) {
                         scheduler_->feed(id, name, std::make_shared<const Record>(record));
                     }));
                 continue;
@@ -464,8 +465,8 @@ std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const
             std::shared_ptr<const std::regex> identity;
             if (!input.identity_pattern.empty())
                 identity = identities[next_identity++];
-            wired.subscriptions.push_back(subscribe(
-                input.topic, true, [this, id, input, identity](const Record &record) {
+            wired.subscriptions.push_back(
+                subscribe(input.topic, true, [this, id, input, identity](const Record &record) {
                     feed_mux(id, input, identity.get(), record);
                 }));
         }
@@ -486,8 +487,9 @@ void NodeCore::feed_mux(const std::string &id, const Wiring::Input &input,
 {
     const ProcessingModule &module = scheduler_->module(id);
     const auto &inputs = module.description().inputs;
-    const auto io = std::find_if(inputs.begin(), inputs.end(),
-                                 [&input](const ModuleIO &candidate) { return candidate.name == input.input; });
+    const auto io = std::find_if(inputs.begin(), inputs.end(), [&input](const ModuleIO &candidate) {
+        return candidate.name == input.input;
+    });
     if (io != inputs.end() && io->type() != RecordType::NONE && io->type() != record.type())
         return; // TopicMux.data_type: a filter, not an error
     std::string topic(record.topic());
@@ -497,7 +499,8 @@ void NodeCore::feed_mux(const std::string &id, const Wiring::Input &input,
         if (std::regex_search(topic, match, *identity))
             name = match.size() > 1 ? match[1].str() : match[0].str();
     }
-    scheduler_->feed_muxed(id, input.input, std::move(name), std::make_shared<const Record>(record));
+    scheduler_->feed_muxed(id, input.input, std::move(name),
+                           std::make_shared<const Record>(record));
 }
 
 Status NodeCore::publish_output(const ProcessingModule &module, std::string_view output,

@@ -13,8 +13,8 @@ namespace
 std::vector<std::pair<ProcessingStatus, ProcessingStatus>> lifecycle_transitions()
 {
     using S = ProcessingStatus;
-    return {{S::initialized, S::created}, {S::created, S::processing}, {S::processing, S::halted},
-            {S::halted, S::processing},   {S::created, S::destroyed},  {S::halted, S::destroyed},
+    return {{S::initialized, S::created},  {S::created, S::processing}, {S::processing, S::halted},
+            {S::halted, S::processing},    {S::created, S::destroyed},  {S::halted, S::destroyed},
             {S::initialized, S::destroyed}};
 }
 
@@ -51,8 +51,7 @@ void check_mode(const ProcessingMode &mode, const std::string &module)
                                   std::to_string(frequency->hertz));
     } else if (const auto *trigger = std::get_if<TriggerOnInput>(&mode)) {
         if (trigger->min_delay.count() < 0)
-            throw InvalidArgument("processing module \"" + module +
-                                  "\": a negative min_delay");
+            throw InvalidArgument("processing module \"" + module + "\": a negative min_delay");
     }
 }
 
@@ -119,9 +118,8 @@ const std::vector<MuxedRecord> &Pass::muxed(std::string_view input) const
 
 void Pass::set_output(std::string_view output, Value value)
 {
-    const auto declared =
-        std::find_if(declared_outputs_->begin(), declared_outputs_->end(),
-                     [output](const ModuleIO &io) { return io.name == output; });
+    const auto declared = std::find_if(declared_outputs_->begin(), declared_outputs_->end(),
+                                       [output](const ModuleIO &io) { return io.name == output; });
     if (declared == declared_outputs_->end())
         throw NotFound("the module has no output \"" + std::string(output) + "\"");
     if (value.empty())
@@ -176,9 +174,8 @@ ProcessingModuleSpec ProcessingModule::spec() const
             using M = std::decay_t<decltype(chosen)>;
             if constexpr (std::is_same_v<M, Frequency>) {
                 const double rounded = std::round(chosen.hertz);
-                mode.mutable_frequency()->set_hertz(static_cast<std::int32_t>(
-                    std::clamp(rounded, 1.0,
-                               static_cast<double>(std::numeric_limits<std::int32_t>::max()))));
+                mode.mutable_frequency()->set_hertz(static_cast<std::int32_t>(std::clamp(
+                    rounded, 1.0, static_cast<double>(std::numeric_limits<std::int32_t>::max()))));
             } else if constexpr (std::is_same_v<M, TriggerOnInput>) {
                 auto &trigger = *mode.mutable_trigger_on_input();
                 trigger.set_min_delay_ms(static_cast<std::int32_t>(std::min<long long>(

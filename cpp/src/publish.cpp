@@ -48,12 +48,12 @@ class TopicText
 } // namespace
 
 #define UBII_CPP_PUBLISH_SCALAR(method, type, c_function)                                          \
-    Status method(NodeCore &core, TopicRef topic, type value) noexcept                                       \
+    Status method(NodeCore &core, TopicRef topic, type value) noexcept                             \
     {                                                                                              \
         const TopicText text(topic);                                                               \
         if (!text.ok())                                                                            \
             return Status::invalid_argument;                                                       \
-        return to_status(c_function(core.c_node(), text.c_str(), value));                        \
+        return to_status(c_function(core.c_node(), text.c_str(), value));                          \
     }
 UBII_CPP_PUBLISH_SCALAR(publish_double, double, ubii_publish_double)
 UBII_CPP_PUBLISH_SCALAR(publish_float, float, ubii_publish_float)
@@ -66,8 +66,7 @@ Status publish_string(NodeCore &core, TopicRef topic, std::string_view value) no
     const TopicText text(topic);
     if (!text.ok())
         return Status::invalid_argument;
-    return to_status(
-        ubii_publish_string(core.c_node(), text.c_str(), value.data(), value.size()));
+    return to_status(ubii_publish_string(core.c_node(), text.c_str(), value.data(), value.size()));
 }
 
 Status publish_image(NodeCore &core, TopicRef topic, const ImageView &image) noexcept
@@ -81,7 +80,7 @@ Status publish_image(NodeCore &core, TopicRef topic, const ImageView &image) noe
 }
 
 Status publish_message(NodeCore &core, TopicRef topic, RecordType type,
-                             const google::protobuf::MessageLite &message) noexcept
+                       const google::protobuf::MessageLite &message) noexcept
 {
     if (type == RecordType::IMAGE2D) { // the pixels go to the transport without a copy of ours
         const auto &image = static_cast<const Image2D &>(message);

@@ -11,8 +11,7 @@ Wiring &Wiring::input(std::string input, std::string topic)
     return *this;
 }
 
-Wiring &Wiring::mux_input(std::string input, std::string topic_regex,
-                          std::string identity_pattern)
+Wiring &Wiring::mux_input(std::string input, std::string topic_regex, std::string identity_pattern)
 {
     inputs_.push_back(
         Input{std::move(input), std::move(topic_regex), true, std::move(identity_pattern)});

@@ -208,7 +208,8 @@ LockstepProcessingReply Scheduler::step(const LockstepProcessingRequest &request
 namespace
 {
 template <class T>
-T read_field(const google::protobuf::Message &message, const google::protobuf::FieldDescriptor *field)
+T read_field(const google::protobuf::Message &message,
+             const google::protobuf::FieldDescriptor *field)
 {
     const auto *reflection = message.GetReflection();
     if constexpr (std::is_same_v<T, double>)
@@ -230,14 +231,14 @@ Record record_from_message(const TopicDataRecord &message)
 {
     const auto *reflection = message.GetReflection();
     const auto *oneof = message.GetDescriptor()->FindOneofByName("type");
-    const auto *field = oneof != nullptr ? reflection->GetOneofFieldDescriptor(message, oneof)
-                                         : nullptr;
+    const auto *field =
+        oneof != nullptr ? reflection->GetOneofFieldDescriptor(message, oneof) : nullptr;
     Value value;
     if (field != nullptr) {
         switch (static_cast<RecordType>(field->number())) {
 #define UBII_CPP_VALUE_FROM_FIELD(upper, number, name, format, cpp_type)                           \
     case RecordType::upper:                                                                        \
-        value = Value(RecordType::upper, read_field<cpp_type>(message, field));                   \
+        value = Value(RecordType::upper, read_field<cpp_type>(message, field));                    \
         break;
             UBII_RECORD_MEMBER_LIST(UBII_CPP_VALUE_FROM_FIELD)
 #undef UBII_CPP_VALUE_FROM_FIELD
@@ -258,8 +259,7 @@ TopicDataRecord message_from_record(const Record &record)
     if (!record.client_id().empty())
         message.set_client_id(std::string(record.client_id()));
     const auto *reflection = message.GetReflection();
-    const auto *field =
-        message.GetDescriptor()->FindFieldByNumber(static_cast<int>(record.type()));
+    const auto *field = message.GetDescriptor()->FindFieldByNumber(static_cast<int>(record.type()));
     if (field == nullptr)
         return message;
     record.value().visit([&](const auto &held) {

@@ -88,12 +88,12 @@ try {
         ubii::Wiring().input("position", base + "/position").output("speed", base + "/speed"));
     int speeds = 0;
     double speed_sum = 0;
-    auto printer = processing.subscribe<double>(base + "/speed", [&](double value,
-                                                                     const ubii::RecordInfo &) {
-        if (speeds++ % 25 == 0)
-            std::printf("speed %.3f units/s\n", value);
-        speed_sum += value;
-    });
+    auto printer =
+        processing.subscribe<double>(base + "/speed", [&](double value, const ubii::RecordInfo &) {
+            if (speeds++ % 25 == 0)
+                std::printf("speed %.3f units/s\n", value);
+            speed_sum += value;
+        });
     processing.run_for(300ms); // the subscriptions reach the master
 
     const auto start = std::chrono::steady_clock::now();

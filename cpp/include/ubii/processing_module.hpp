@@ -138,8 +138,8 @@ class Pass
         bool updated = false;
     };
 
-    Pass(std::vector<Input> inputs, const std::vector<ModuleIO> &outputs, std::chrono::nanoseconds delta,
-         std::uint64_t number);
+    Pass(std::vector<Input> inputs, const std::vector<ModuleIO> &outputs,
+         std::chrono::nanoseconds delta, std::uint64_t number);
 
     // Since the previous pass began (0 for the first).
     std::chrono::nanoseconds delta_time() const noexcept

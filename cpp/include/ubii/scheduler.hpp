@@ -39,9 +39,8 @@ class Scheduler
   public:
     // Publishes one output a pass set: Status::ok, or why not (counted as Timing::outputs_failed
     // and reported).
-    using OutputSink =
-        std::function<Status(const ProcessingModule &module, std::string_view output,
-                             const Value &value)>;
+    using OutputSink = std::function<Status(const ProcessingModule &module, std::string_view output,
+                                            const Value &value)>;
     // Errors of modules: passes that threw (Status::callback_threw), records of the wrong type
     // (Status::wrong_type), outputs not published; the detail names the module.
     using ErrorHandler = std::function<void(Status status, std::string_view detail)>;

@@ -9,11 +9,15 @@
 #include "ubii/messages.hpp"
 #include "ubii/node.hpp"
 #include "ubii/node_options.hpp"
+#include "ubii/processing_module.hpp"
 #include "ubii/protocol.hpp"
 #include "ubii/record.hpp"
 #include "ubii/record_type.hpp"
 #include "ubii/result.hpp"
+#include "ubii/running_module.hpp"
+#include "ubii/scheduler.hpp"
 #include "ubii/service_call.hpp"
+#include "ubii/timing.hpp"
 #include "ubii/value.hpp"
 
 #endif

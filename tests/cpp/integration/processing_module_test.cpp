@@ -28,8 +28,8 @@ std::unique_ptr<ubii::ProcessingModule> sum_module(ubii::ProcessingMode mode)
                               {ubii::output<double>("sum")},
                               mode},
                              [](ubii::Pass &pass) {
-                                 pass.set_output("sum", pass.input<double>("a") +
-                                                            pass.input<double>("b"));
+                                 pass.set_output("sum",
+                                                 pass.input<double>("a") + pass.input<double>("b"));
                              });
 }
 
@@ -42,9 +42,10 @@ TEST(ProcessingModuleOnMaster, SumsWhatTheNodeJsNodePublishesAndTheNodeJsNodeRec
     const std::string run = run_id("sum");
     const std::string prefix = "/pm/" + run + "/";
     ubii::RunningModule sum =
-        node.run(sum_module(ubii::TriggerOnInput{0ms, true}),
-                 ubii::Wiring().input("a", prefix + "a").input("b", prefix + "b").output("sum",
-                                                                                     prefix + "sum"));
+        node.run(sum_module(ubii::TriggerOnInput{0ms, true}), ubii::Wiring()
+                                                                  .input("a", prefix + "a")
+                                                                  .input("b", prefix + "b")
+                                                                  .output("sum", prefix + "sum"));
     EXPECT_EQ(sum.status(), ubii::ProcessingStatus::processing);
     node.run_for(300ms); // the subscriptions reach the master
 
@@ -83,17 +84,19 @@ TEST(ProcessingModuleOnMaster, AWorkerPassOf300msDoesNotStallTheNodesRoundTrips)
     node.connect(10s);
     const std::string topic = "/pm/" + run_id("worker") + "/slow";
     std::atomic<int> passes{0};
-    ubii::ModuleDescription description{
-        "slow", "sleeps 300 ms per pass", {}, {ubii::output<double>("done")}, ubii::Free{},
-        ubii::Executor::worker};
-    ubii::RunningModule slow = node.run(ubii::make_module(description,
-                                                          [&](ubii::Pass &pass) {
-                                                              std::this_thread::sleep_for(300ms);
-                                                              pass.set_output("done", double(++passes));
-                                                          }),
-                                        ubii::Wiring().output("done", topic));
+    ubii::ModuleDescription description{"slow",       "sleeps 300 ms per pass",
+                                        {},           {ubii::output<double>("done")},
+                                        ubii::Free{}, ubii::Executor::worker};
+    ubii::RunningModule slow =
+        node.run(ubii::make_module(description,
+                                   [&](ubii::Pass &pass) {
+                                       std::this_thread::sleep_for(300ms);
+                                       pass.set_output("done", double(++passes));
+                                   }),
+                 ubii::Wiring().output("done", topic));
     int outputs = 0;
-    auto subscription = node.subscribe<double>(topic, [&](double, const ubii::RecordInfo &) { ++outputs; });
+    auto subscription =
+        node.subscribe<double>(topic, [&](double, const ubii::RecordInfo &) { ++outputs; });
 
     // Round trips while passes run: a stalled loop would take 300 ms for one.
     std::vector<std::chrono::milliseconds> round_trips;
@@ -125,9 +128,11 @@ TEST(ProcessingModuleOnMaster, AnExceptionInAPassIsReportedAndTheNextPassRuns)
     });
     node.connect(10s);
     const std::string prefix = "/pm/" + run_id("throws") + "/";
-    ubii::ModuleDescription description{
-        "picky", "refuses odd numbers", {ubii::input<double>("x")}, {ubii::output<double>("half")},
-        ubii::TriggerOnInput{}};
+    ubii::ModuleDescription description{"picky",
+                                        "refuses odd numbers",
+                                        {ubii::input<double>("x")},
+                                        {ubii::output<double>("half")},
+                                        ubii::TriggerOnInput{}};
     ubii::RunningModule picky =
         node.run(ubii::make_module(description,
                                    [](ubii::Pass &pass) {
@@ -160,9 +165,10 @@ TEST(ProcessingModuleOnMaster, AFrequencyModulePublishesAtItsRateThroughTheMaste
     ubii::ModuleDescription description{
         "ticker", "counts", {}, {ubii::output<std::int32_t>("count")}, ubii::Frequency{50}};
     std::int32_t count = 0;
-    ubii::RunningModule ticker = node.run(
-        ubii::make_module(description, [&](ubii::Pass &pass) { pass.set_output("count", count++); }),
-        ubii::Wiring().output("count", topic));
+    ubii::RunningModule ticker =
+        node.run(ubii::make_module(description,
+                                   [&](ubii::Pass &pass) { pass.set_output("count", count++); }),
+                 ubii::Wiring().output("count", topic));
     std::vector<std::int32_t> received;
     auto subscription = node.subscribe<std::int32_t>(
         topic, [&](std::int32_t value, const ubii::RecordInfo &) { received.push_back(value); });

@@ -89,7 +89,8 @@ TEST_F(SchedulerTest, FrequencyKeepsAbsoluteDeadlinesWithoutDriftOver10000Passes
         run_at(*due + std::chrono::microseconds(lateness_us(random)));
     }
     for (std::size_t k : {std::size_t(1), std::size_t(5000), std::size_t(9999)}) {
-        const auto deadline = t0 + std::chrono::nanoseconds(std::llround(static_cast<double>(k) * 1e9 / 60));
+        const auto deadline =
+            t0 + std::chrono::nanoseconds(std::llround(static_cast<double>(k) * 1e9 / 60));
         EXPECT_GE(starts[k], deadline) << "pass " << k;
         EXPECT_LE(starts[k] - deadline, 300us) << "pass " << k;
     }
@@ -186,9 +187,8 @@ TEST_F(SchedulerTest, ATriggerInsideMinDelayRunsExactlyAtItsEnd)
 
 TEST_F(SchedulerTest, TheLatestRecordWinsAndTheReplacedOnesAreCounted)
 {
-    const std::string id = add(ubii::TriggerOnInput{10ms, false}, [](Pass &pass) {
-        pass.set_output("sum", pass.input<double>("a"));
-    });
+    const std::string id = add(ubii::TriggerOnInput{10ms, false},
+                               [](Pass &pass) { pass.set_output("sum", pass.input<double>("a")); });
     scheduler.feed(id, "a", record("/a", 1.0));
     scheduler.run_due();
     scheduler.feed(id, "a", record("/a", 2.0));
@@ -265,9 +265,11 @@ TEST_F(SchedulerTest, AFreeModuleRunsOncePerTurnOfTheLoop)
 
 TEST_F(SchedulerTest, OutputsOfZeroFalseAndEmptyArePublished)
 {
-    ubii::ModuleDescription description{"falsy", "", {}, {ubii::output<double>("zero"),
-                                                          ubii::output<bool>("no"),
-                                                          ubii::output<std::string>("empty")},
+    ubii::ModuleDescription description{"falsy",
+                                        "",
+                                        {},
+                                        {ubii::output<double>("zero"), ubii::output<bool>("no"),
+                                         ubii::output<std::string>("empty")},
                                         ubii::Free{}};
     const std::string id = scheduler.add(ubii::make_module(description, [](Pass &pass) {
         pass.set_output("zero", 0.0);
@@ -295,7 +297,8 @@ TEST_F(SchedulerTest, SettingAnUndeclaredOrMistypedOutputFailsThePass)
     scheduler.run_due();
     scheduler.run_due();
     ASSERT_EQ(errors.size(), 2u);
-    EXPECT_NE(errors[0].second.find("no output \"product\""), std::string::npos) << errors[0].second;
+    EXPECT_NE(errors[0].second.find("no output \"product\""), std::string::npos)
+        << errors[0].second;
     EXPECT_NE(errors[1].second.find("takes double"), std::string::npos) << errors[1].second;
 }
 
@@ -432,8 +435,8 @@ TEST_F(SchedulerTest, AWorkerPassRunsOffThePollThreadAndItsOutputsComeBackThroug
 TEST_F(SchedulerTest, WithoutAWakerABusyWorkerIsLookedAtEveryMillisecond)
 {
     Gate gate;
-    const std::string id =
-        add(ubii::Free{}, [&](Pass &) { gate.wait(); }, ubii::Executor::worker);
+    const std::string id = add(
+        ubii::Free{}, [&](Pass &) { gate.wait(); }, ubii::Executor::worker);
     scheduler.run_due();
     gate.await_entered();
     EXPECT_EQ(scheduler.next_due(), clock.now() + 1ms);
@@ -561,12 +564,13 @@ TEST(ProcessingModule, ADescriptionThatCannotWorkIsRefused)
 {
     const auto nothing = [](Pass &) {};
     EXPECT_THROW(ubii::make_module({"", "", {}, {}, ubii::Free{}}, nothing), ubii::InvalidArgument);
-    EXPECT_THROW(ubii::make_module({"m", "", {ubii::input<double>("a"), ubii::input<bool>("a")}, {},
-                                    ubii::Free{}},
-                                   nothing),
-                 ubii::InvalidArgument);
-    EXPECT_THROW(ubii::make_module({"m", "", {{"a", "ubii.dataStructure.NoSuch"}}, {}, ubii::Free{}},
-                                   nothing),
+    EXPECT_THROW(
+        ubii::make_module(
+            {"m", "", {ubii::input<double>("a"), ubii::input<bool>("a")}, {}, ubii::Free{}},
+            nothing),
+        ubii::InvalidArgument);
+    EXPECT_THROW(ubii::make_module(
+                     {"m", "", {{"a", "ubii.dataStructure.NoSuch"}}, {}, ubii::Free{}}, nothing),
                  ubii::InvalidArgument);
     EXPECT_THROW(ubii::make_module({"m", "", {}, {}, ubii::Frequency{0}}, nothing),
                  ubii::InvalidArgument);
