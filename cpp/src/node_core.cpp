@@ -195,7 +195,8 @@ void NodeCore::wait_for_io(std::chrono::milliseconds timeout)
 {
     using std::chrono::milliseconds;
     std::chrono::nanoseconds wait = timeout;
-    const std::optional<std::chrono::nanoseconds> due = until_due();
+    const std::optional<std::chrono::nanoseconds> due =
+        scheduler_->empty() ? std::nullopt : until_due();
     const bool pass_first = due && *due < wait;
     if (pass_first)
         wait = *due;
@@ -210,7 +211,7 @@ void NodeCore::wait_for_io(std::chrono::milliseconds timeout)
         if (next && *next > now && *next - now <= milliseconds(1))
             scheduler_->clock().sleep_until(*next);
     }
-    if (scheduler_->ids().empty())
+    if (scheduler_->empty())
         return;
     guard("the processing module scheduler", [this] { scheduler_->run_due(); });
     retired_.clear();

@@ -109,6 +109,11 @@ bool Scheduler::contains(std::string_view id) const noexcept
     return impl_->runners.find(id) != impl_->runners.end();
 }
 
+bool Scheduler::empty() const noexcept
+{
+    return impl_->runners.empty();
+}
+
 std::vector<std::string> Scheduler::ids() const
 {
     std::vector<std::string> ids;

@@ -69,6 +69,7 @@ class Scheduler
     // Halts the module if it runs, runs on_destroyed (DESTROYED) and drops it.
     void remove(std::string_view id);
     bool contains(std::string_view id) const noexcept;
+    bool empty() const noexcept;
     std::vector<std::string> ids() const;
     // ubii::NotFound for an unknown id.
     ProcessingModule &module(std::string_view id);
