@@ -1,9 +1,12 @@
 // Processing modules on a ubii::Node against the real master: inputs from and outputs to the
 // official Node.js node, a worker pass that does not stall the node, errors reported by name.
 #include <atomic>
+#include <optional>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
+#include <poll.h>
 #include <unistd.h>
 
 #include "child_process.h"
@@ -191,6 +194,43 @@ TEST(ProcessingModuleOnMaster, WiringAnUnknownInputIsRefusedAndNothingRuns)
     EXPECT_THROW(node.run(sum_module(ubii::TriggerOnInput{}), ubii::Wiring().input("c", "/c")),
                  ubii::NotFound);
     EXPECT_TRUE(node.scheduler().ids().empty());
+}
+
+TEST(ProcessingModuleOnMaster, AnExternalLoopWaitsOnTheNodesFdsUntilTheNextPassIsDue)
+{
+    ubii::Node node(ubii_cpp_test::options_for("cpp-pm-external-loop"));
+    node.connect(10s);
+    EXPECT_FALSE(node.next_timeout() && *node.next_timeout() < 1ms)
+        << "without modules the deadline is the core's own";
+    int passes = 0;
+    ubii::ModuleDescription description{"ticker", "counts", {}, {}, ubii::Frequency{20}};
+    ubii::RunningModule ticker =
+        node.run(ubii::make_module(description, [&](ubii::Pass &) { ++passes; }));
+    node.poll(0ms); // the first pass is due at once
+    ASSERT_EQ(passes, 1);
+    const std::optional<std::chrono::nanoseconds> timeout = node.next_timeout();
+    ASSERT_TRUE(timeout);
+    EXPECT_GT(*timeout, 40ms);
+    EXPECT_LE(*timeout, 50ms);
+
+    // A frame loop of the application's own: poll(2) on the node's descriptors with the node's
+    // deadline, then poll(0) on the node. Passes keep their rate without the node ever waiting.
+    std::vector<ubii_pollfd> fds(16);
+    const auto end = std::chrono::steady_clock::now() + 1s;
+    while (std::chrono::steady_clock::now() < end) {
+        const int count = node.pollfds(fds.data(), static_cast<int>(fds.size()));
+        ASSERT_LE(count, static_cast<int>(fds.size()));
+        std::vector<pollfd> waiting;
+        for (int i = 0; i < count; ++i)
+            waiting.push_back({fds[static_cast<std::size_t>(i)].fd,
+                               static_cast<short>(fds[static_cast<std::size_t>(i)].events), 0});
+        const auto wait = node.next_timeout().value_or(100ms);
+        const auto wait_ms = std::chrono::ceil<std::chrono::milliseconds>(wait);
+        ::poll(waiting.data(), waiting.size(), static_cast<int>(wait_ms.count()));
+        node.poll(0ms);
+    }
+    EXPECT_GE(passes, 19);
+    EXPECT_LE(passes, 23);
 }
 
 } // namespace
