@@ -211,8 +211,7 @@ void ModuleRunner::feed_muxed(std::string_view input, std::string identity,
         std::find_if(target.muxed.begin(), target.muxed.end(),
                      [topic](const MuxEntry &candidate) { return candidate.topic == topic; });
     if (entry == target.muxed.end()) {
-        target.muxed.push_back(
-            MuxEntry{std::string(topic), MuxedRecord{std::move(identity), nullptr}});
+        target.muxed.push_back(MuxEntry{std::string(topic), MuxedRecord{}});
         entry = std::prev(target.muxed.end());
     } else if (entry->fresh) {
         ++inputs_dropped_;

@@ -187,6 +187,39 @@ TEST(ProcessingModuleOnMaster, AFrequencyModulePublishesAtItsRateThroughTheMaste
     EXPECT_NEAR(timing.intervals.mean.count(), 0.02, 0.005);
 }
 
+TEST(ProcessingModuleOnMaster, AMuxInputKeepsTheLatestRecordPerTopicWithItsIdentity)
+{
+    ubii::Node node(ubii_cpp_test::options_for("cpp-pm-mux"));
+    std::vector<std::string> errors;
+    node.on_error([&](ubii::Status, std::string_view detail) { errors.emplace_back(detail); });
+    node.connect(10s);
+    const std::string prefix = "/pm/" + run_id("mux") + "/";
+    std::vector<std::vector<std::pair<std::string, double>>> seen;
+    ubii::ModuleDescription description{
+        "mux", "reads every hand", {ubii::input<double>("hands")}, {}, ubii::TriggerOnInput{}};
+    ubii::RunningModule mux = node.run(
+        ubii::make_module(description,
+                          [&](ubii::Pass &pass) {
+                              std::vector<std::pair<std::string, double>> hands;
+                              for (const ubii::MuxedRecord &hand : pass.muxed("hands"))
+                                  hands.emplace_back(hand.identity, hand.record->as<double>());
+                              seen.push_back(std::move(hands));
+                          }),
+        ubii::Wiring().mux_input("hands", "^" + prefix + "hand/", "hand/([a-z]+)$"));
+    node.run_for(300ms);
+    node.publish(prefix + "hand/left", 1.0);
+    node.publish(prefix + "hand/right", 2.0);
+    node.publish(prefix + "hand/left", 3.0);
+    node.publish(prefix + "hand/label", std::string("not a double: filtered"));
+    ASSERT_TRUE(node.run_until(
+        [&] { return !seen.empty() && seen.back().size() == 2 && seen.back()[0].second == 3.0; },
+        5s));
+    const std::vector<std::pair<std::string, double>> expected = {{"left", 3.0}, {"right", 2.0}};
+    EXPECT_EQ(seen.back(), expected);
+    EXPECT_EQ(mux.timing().type_mismatches, 0u);
+    EXPECT_TRUE(errors.empty()) << errors.front();
+}
+
 TEST(ProcessingModuleOnMaster, WiringAnUnknownInputIsRefusedAndNothingRuns)
 {
     ubii::Node node(ubii_cpp_test::options_for("cpp-pm-wiring"));
