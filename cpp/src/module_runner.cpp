@@ -235,9 +235,9 @@ bool ModuleRunner::triggered() const noexcept
                                           : std::any_of(slots_.begin(), slots_.end(), updated);
 }
 
-std::optional<Clock::time_point> ModuleRunner::next_due() const
+Clock::time_point ModuleRunner::deadline(std::uint64_t tick) const noexcept
 {
-    return next_due_at(context_.clock.now());
+    return start_ + std::chrono::nanoseconds(std::llround(static_cast<double>(tick) * period_ns_));
 }
 
 std::optional<Clock::time_point> ModuleRunner::next_due_at(Clock::time_point now) const
@@ -248,8 +248,7 @@ std::optional<Clock::time_point> ModuleRunner::next_due_at(Clock::time_point now
         return std::nullopt;
     const ProcessingMode &mode = module_->description().mode;
     if (std::holds_alternative<Frequency>(mode))
-        return start_ +
-               std::chrono::nanoseconds(std::llround(static_cast<double>(next_tick_) * period_ns_));
+        return deadline(next_tick_);
     if (const auto *trigger = std::get_if<TriggerOnInput>(&mode)) {
         if (!triggered())
             return std::nullopt;
@@ -273,10 +272,6 @@ Pass ModuleRunner::begin_pass(Clock::time_point now, std::optional<std::chrono::
     if (std::holds_alternative<Frequency>(module_->description().mode)) {
         // The tick whose deadline is the latest one passed; the ones between it and next_tick_
         // were missed while this pass was late.
-        const auto deadline = [this](std::uint64_t tick) {
-            return start_ +
-                   std::chrono::nanoseconds(std::llround(static_cast<double>(tick) * period_ns_));
-        };
         const double elapsed = static_cast<double>((now - start_).count());
         std::uint64_t tick =
             std::max<std::uint64_t>(next_tick_, static_cast<std::uint64_t>(elapsed / period_ns_));

@@ -57,9 +57,8 @@ class ModuleRunner
     void feed_muxed(std::string_view input, std::string identity,
                     std::shared_ptr<const Record> record);
 
-    // When the next pass is due (or a finished worker pass is to be collected); none if the
-    // module waits for records, a driver, or a worker pass still running.
-    std::optional<Clock::time_point> next_due() const;
+    // When the next pass is due, `now` at the latest (or a finished worker pass is to be
+    // collected); none if the module waits for records, a driver, or a worker pass still running.
     std::optional<Clock::time_point> next_due_at(Clock::time_point now) const;
     bool worker_busy() const noexcept
     {
@@ -92,6 +91,8 @@ class ModuleRunner
     Slot &slot(std::string_view input);
     bool accepts(const Slot &slot, const Record &record);
     bool triggered() const noexcept;
+    // Frequency mode: when tick number `tick` is due.
+    Clock::time_point deadline(std::uint64_t tick) const noexcept;
     Pass begin_pass(Clock::time_point now, std::optional<std::chrono::nanoseconds> delta);
     Finished execute(Pass &pass) noexcept;
     void finish(Finished finished);

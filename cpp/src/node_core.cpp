@@ -75,6 +75,17 @@ int milliseconds_int(std::chrono::milliseconds value)
                                                    : static_cast<int>(count);
 }
 
+// A mux input's identity for `topic`: the first capture group of `pattern` searched in it, the
+// whole match without a group, or the topic without a pattern (or a match).
+std::string identity_of(std::string_view topic, const std::regex *pattern)
+{
+    std::string identity(topic);
+    std::smatch match;
+    if (pattern != nullptr && std::regex_search(identity, match, *pattern))
+        return match.size() > 1 ? match[1].str() : match[0].str();
+    return identity;
+}
+
 } // namespace
 
 template <class Where, class F> void NodeCore::guard(const Where &where, F &&code) noexcept
@@ -195,8 +206,7 @@ void NodeCore::wait_for_io(std::chrono::milliseconds timeout)
 {
     using std::chrono::milliseconds;
     std::chrono::nanoseconds wait = timeout;
-    const std::optional<std::chrono::nanoseconds> due =
-        scheduler_->empty() ? std::nullopt : until_due();
+    const std::optional<std::chrono::nanoseconds> due = until_due();
     const bool pass_first = due && *due < wait;
     if (pass_first)
         wait = *due;
@@ -440,22 +450,29 @@ std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const
                            output.output + "\" to wire to " + output.topic);
         wired.outputs[output.output] = output.topic;
     }
-    std::vector<std::shared_ptr<const std::regex>> identities;
-    for (const Wiring::Input &input : wiring.inputs()) {
+    // Compiled before the module is added, so that a bad pattern leaves nothing behind.
+    std::vector<std::shared_ptr<const std::regex>> identities(wiring.inputs().size());
+    for (std::size_t i = 0; i < wiring.inputs().size(); ++i) {
+        const Wiring::Input &input = wiring.inputs()[i];
         if (!input.mux || input.identity_pattern.empty())
             continue;
         try {
-            identities.push_back(std::make_shared<const std::regex>(input.identity_pattern));
+            identities[i] = std::make_shared<const std::regex>(input.identity_pattern);
         } catch (const std::regex_error &error) {
             throw InvalidArgument("identity pattern \"" + input.identity_pattern +
                                   "\" of input \"" + input.input + "\": " + error.what());
         }
     }
+    const auto type_of = [&description](const std::string &name) {
+        return std::find_if(description.inputs.begin(), description.inputs.end(),
+                            [&name](const ModuleIO &io) { return io.name == name; })
+            ->type();
+    };
 
     const std::string id = scheduler_->add(std::move(module));
     try {
-        std::size_t next_identity = 0;
-        for (const Wiring::Input &input : wiring.inputs()) {
+        for (std::size_t i = 0; i < wiring.inputs().size(); ++i) {
+            const Wiring::Input &input = wiring.inputs()[i];
             if (!input.mux) {
                 wired.subscriptions.push_back(subscribe(
                     input.topic, false, [this, id, name = input.input](const Record &record) {
@@ -463,12 +480,15 @@ std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const
                     }));
                 continue;
             }
-            std::shared_ptr<const std::regex> identity;
-            if (!input.identity_pattern.empty())
-                identity = identities[next_identity++];
-            wired.subscriptions.push_back(
-                subscribe(input.topic, true, [this, id, input, identity](const Record &record) {
-                    feed_mux(id, input, identity.get(), record);
+            wired.subscriptions.push_back(subscribe(
+                input.topic, true,
+                [this, id, name = input.input, type = type_of(input.input),
+                 identity = identities[i]](const Record &record) {
+                    // TopicMux.data_type: a filter, not an error.
+                    if (type != RecordType::NONE && type != record.type())
+                        return;
+                    scheduler_->feed_muxed(id, name, identity_of(record.topic(), identity.get()),
+                                           std::make_shared<const Record>(record));
                 }));
         }
         module_wirings_[id] = std::move(wired);
@@ -481,27 +501,6 @@ std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const
         throw;
     }
     return id;
-}
-
-void NodeCore::feed_mux(const std::string &id, const Wiring::Input &input,
-                        const std::regex *identity, const Record &record)
-{
-    const ProcessingModule &module = scheduler_->module(id);
-    const auto &inputs = module.description().inputs;
-    const auto io = std::find_if(inputs.begin(), inputs.end(), [&input](const ModuleIO &candidate) {
-        return candidate.name == input.input;
-    });
-    if (io != inputs.end() && io->type() != RecordType::NONE && io->type() != record.type())
-        return; // TopicMux.data_type: a filter, not an error
-    std::string topic(record.topic());
-    std::string name = topic;
-    if (identity != nullptr) {
-        std::smatch match;
-        if (std::regex_search(topic, match, *identity))
-            name = match.size() > 1 ? match[1].str() : match[0].str();
-    }
-    scheduler_->feed_muxed(id, input.input, std::move(name),
-                           std::make_shared<const Record>(record));
 }
 
 Status NodeCore::publish_output(const ProcessingModule &module, std::string_view output,

@@ -124,8 +124,6 @@ class NodeCore
     void wait_for_io(std::chrono::milliseconds timeout);
     Status publish_output(const ProcessingModule &module, std::string_view output,
                           const Value &value) noexcept;
-    void feed_mux(const std::string &id, const Wiring::Input &input, const std::regex *identity,
-                  const Record &record);
 
     struct ModuleWiring {
         std::vector<std::uint64_t> subscriptions;

@@ -146,6 +146,8 @@ void Scheduler::feed_muxed(std::string_view id, std::string_view input, std::str
 
 std::optional<Clock::time_point> Scheduler::next_due() const
 {
+    if (impl_->runners.empty())
+        return std::nullopt;
     const Clock::time_point now = impl_->clock.now();
     std::optional<Clock::time_point> earliest;
     for (const auto &entry : impl_->runners) {
@@ -195,10 +197,9 @@ LockstepProcessingReply Scheduler::step(const LockstepProcessingRequest &request
 
     LockstepProcessingReply reply;
     for (const std::string &id : ids) {
-        detail::ModuleRunner &runner = impl_->find(id);
+        const auto &inputs = impl_->find(id).module().description().inputs;
         std::vector<Record> mine;
         for (const Record &record : records) {
-            const auto &inputs = runner.module().description().inputs;
             if (std::any_of(inputs.begin(), inputs.end(),
                             [&record](const ModuleIO &io) { return io.name == record.topic(); }))
                 mine.push_back(record);
