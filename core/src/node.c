@@ -345,8 +345,13 @@ static void on_server_configuration(ubii_node *node, const ubii_reply *reply)
     request.which_type = ubii_services_ServiceRequest_client_tag;
     ubii__copy_string(request.type.client.name, sizeof request.type.client.name, node->client_name);
     request.type.client.is_dedicated_processing_node = node->config.is_dedicated_processing_node;
+    if (node->complete_registration != NULL) {
+        node->complete_registration(node, &request.type.client);
+    }
     status = ubii__enqueue(node, &request, 0, UBII__CALL_REGISTRATION, NULL, NULL);
     if (status != UBII_OK) {
+        /* TOO_LARGE: the offered processing modules (ubii/processing.h) overfill the queue. */
+        ubii__report(node, status, "cannot queue the registration request");
         ubii__connection_lost(node, status);
         return;
     }

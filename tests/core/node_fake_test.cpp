@@ -658,8 +658,9 @@ TEST_F(NodeWithFakeMaster, EncodedMembersPublishLikeTheirNanopbTwins)
     ubii_dataStructure_Vector3 vector = {1.5, -2, 3};
     ASSERT_EQ(ubii_publish_vector3(&node, "/v", &vector), UBII_OK);
     // Vector3{x 1.5, y -2, z 3}: three fixed64 fields.
-    const std::vector<uint8_t> body = {0x09, 0, 0, 0, 0, 0, 0, 0xf8, 0x3f, 0x11, 0, 0, 0, 0,
-                                       0,    0, 0, 0xc0, 0x19, 0, 0, 0, 0, 0, 0, 0x08, 0x40};
+    const std::vector<uint8_t> body = {0x09, 0, 0, 0, 0, 0, 0, 0xf8, 0x3f,
+                                       0x11, 0, 0, 0, 0, 0, 0, 0,    0xc0,
+                                       0x19, 0, 0, 0, 0, 0, 0, 0x08, 0x40};
     ASSERT_EQ(ubii_publish_encoded(&node, "/v", UBII_RECORD_VECTOR3, body.data(), body.size()),
               UBII_OK);
     ASSERT_EQ(fake.topic_sent.size(), 2u);
@@ -717,6 +718,125 @@ TEST_F(NodeWithFakeMaster, EncodedCallsAreSentAsGivenAndAnswered)
     EXPECT_EQ(ubii_call_encoded(&node, oversized.data(), oversized.size(), 0, nullptr, nullptr),
               UBII_ERR_TOO_LARGE);
 }
+
+#ifdef UBII_PROCESSING_H
+// The names of the processing modules a registration request offers (Client.processing_modules),
+// and whether it says the client is a dedicated processing node.
+struct OfferedModules {
+    std::vector<std::string> names;
+    bool dedicated = false;
+};
+
+OfferedModules offered_in(const std::vector<uint8_t> &request_bytes)
+{
+    StringValues specs;
+    ubii_services_ServiceRequest request = ubii_services_ServiceRequest_init_zero;
+    request.cb_type.arg = &specs;
+    request.cb_type.funcs.decode = [](pb_istream_t *, const pb_field_t *field, void **arg) {
+        if (field->tag == ubii_services_ServiceRequest_client_tag) {
+            auto *client = static_cast<ubii_clients_Client *>(field->pData);
+            decode_into(client->processing_modules, *static_cast<StringValues *>(*arg));
+        }
+        return true;
+    };
+    pb_istream_t stream = pb_istream_from_buffer(request_bytes.data(), request_bytes.size());
+    OfferedModules offered;
+    if (!pb_decode(&stream, ubii_services_ServiceRequest_fields, &request))
+        return offered;
+    offered.dedicated = request.type.client.is_dedicated_processing_node;
+    for (const std::string &bytes : specs.values) {
+        ubii_processing_ProcessingModule spec = ubii_processing_ProcessingModule_init_zero;
+        pb_istream_t spec_stream =
+            pb_istream_from_buffer(reinterpret_cast<const uint8_t *>(bytes.data()), bytes.size());
+        offered.names.push_back(
+            pb_decode(&spec_stream, ubii_processing_ProcessingModule_fields, &spec) ? spec.name
+                                                                                    : "<invalid>");
+    }
+    return offered;
+}
+
+std::vector<uint8_t> encoded_spec(const char *name)
+{
+    ubii_processing_ProcessingModule spec = ubii_processing_ProcessingModule_init_zero;
+    strncpy(spec.name, name, sizeof spec.name - 1);
+    std::vector<uint8_t> bytes(256);
+    pb_ostream_t stream = pb_ostream_from_buffer(bytes.data(), bytes.size());
+    EXPECT_TRUE(pb_encode(&stream, ubii_processing_ProcessingModule_fields, &spec));
+    bytes.resize(stream.bytes_written);
+    return bytes;
+}
+
+std::vector<std::vector<uint8_t>> registrations(const FakePort &fake)
+{
+    std::vector<std::vector<uint8_t>> found;
+    for (size_t i = 0; i < fake.requests.size(); ++i) {
+        if (std::string(fake.requests[i].topic) == UBII_SERVICE_CLIENT_REGISTRATION)
+            found.push_back(fake.request_bytes[i]);
+    }
+    return found;
+}
+
+TEST_F(NodeWithFakeMaster, OfferedProcessingModulesGoWithEveryRegistration)
+{
+    const std::vector<uint8_t> sum = encoded_spec("sum"), ocr = encoded_spec("ocr");
+    const ubii_encoded_message specs[] = {{sum.data(), sum.size()}, {ocr.data(), ocr.size()}};
+    config.is_dedicated_processing_node = true;
+    init();
+    ASSERT_EQ(ubii_node_offer_processing_modules(&node, specs, 2), UBII_OK);
+    ASSERT_EQ(ubii_node_start(&node), UBII_OK);
+    poll(5);
+    ASSERT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+
+    fake.set_state(UBII_CHANNEL_TOPIC, UBII_CHANNEL_LOST);
+    poll(2);
+    advance(150);
+    poll(5);
+    ASSERT_EQ(ubii_node_state(&node), UBII_STATE_READY);
+    const auto sent = registrations(fake);
+    ASSERT_EQ(sent.size(), 2u);
+    for (const auto &registration : sent) {
+        const OfferedModules offered = offered_in(registration);
+        EXPECT_EQ(offered.names, (std::vector<std::string>{"sum", "ocr"}));
+        EXPECT_TRUE(offered.dedicated);
+    }
+
+    // Offering none takes effect at the next registration.
+    ASSERT_EQ(ubii_node_offer_processing_modules(&node, nullptr, 0), UBII_OK);
+    fake.set_state(UBII_CHANNEL_TOPIC, UBII_CHANNEL_LOST);
+    poll(2);
+    advance(150);
+    poll(5);
+    ASSERT_EQ(registrations(fake).size(), 3u);
+    EXPECT_TRUE(offered_in(registrations(fake).back()).names.empty());
+}
+
+TEST_F(NodeWithFakeMaster, OfferedModulesThatOverfillTheQueueFailTheAttemptVisibly)
+{
+    std::vector<uint8_t> huge(UBII_SERVICE_QUEUE_BYTES, 'x');
+    huge[0] = 0x12; // name (2), length-delimited, filling the rest
+    huge[1] = static_cast<uint8_t>(0x80 | ((huge.size() - 3) & 0x7f));
+    huge[2] = static_cast<uint8_t>((huge.size() - 3) >> 7);
+    const ubii_encoded_message spec = {huge.data(), huge.size()};
+    init();
+    ASSERT_EQ(ubii_node_offer_processing_modules(&node, &spec, 1), UBII_OK);
+    ASSERT_EQ(ubii_node_start(&node), UBII_OK);
+    poll(5);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(errors.front().first, UBII_ERR_TOO_LARGE);
+    EXPECT_NE(errors.front().second.find("registration"), std::string::npos);
+    EXPECT_TRUE(registrations(fake).empty());
+}
+
+TEST_F(NodeWithFakeMaster, OfferingModulesChecksItsArguments)
+{
+    init();
+    const ubii_encoded_message no_bytes = {nullptr, 3};
+    EXPECT_EQ(ubii_node_offer_processing_modules(nullptr, nullptr, 0), UBII_ERR_INVALID_ARGUMENT);
+    EXPECT_EQ(ubii_node_offer_processing_modules(&node, nullptr, 1), UBII_ERR_INVALID_ARGUMENT);
+    EXPECT_EQ(ubii_node_offer_processing_modules(&node, &no_bytes, 1), UBII_ERR_INVALID_ARGUMENT);
+}
+#endif
 
 TEST(RecordTypeTable, NamesAndFormatsComeFromTheSchema)
 {

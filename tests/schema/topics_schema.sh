@@ -59,6 +59,8 @@ ubii_dataStructure_Object2D|int f(void); int f(void) { return (int)sizeof(ubii_d
 lists.pb.h|#include "ubii/lists.h"
 image.pb.h|#include "ubii/image.h"
 device.pb.h|#include "ubii/devices.h"
+processingModule.pb.h|#include "ubii/processing.h"
+ubii_node_offer_processing_modules|int f(ubii_node *n); int f(ubii_node *n) { return ubii_node_offer_processing_modules(n, 0, 0); }
 SNIPPETS
 echo "topics_schema: the API of left-out types does not compile"
 

@@ -80,6 +80,7 @@ void FakePort::on_service_request(const std::vector<uint8_t> &bytes)
         return;
     }
     requests.push_back(request);
+    request_bytes.push_back(bytes);
     auto append = [](std::vector<std::string> &to, const StringValues &from) {
         to.insert(to.end(), from.values.begin(), from.values.end());
     };

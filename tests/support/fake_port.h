@@ -42,6 +42,7 @@ class FakePort
     }
 
     std::vector<ubii_services_ServiceRequest> requests; // decoded, in order
+    std::vector<std::vector<uint8_t>> request_bytes;    // the same as they were sent
     std::vector<std::string> subscribe_topics, subscribe_regexes, unsubscribe_topics,
         unsubscribe_regexes; // from every TopicSubscription request
     std::vector<SentMessage> topic_sent;

@@ -41,6 +41,11 @@ struct ubii_node {
     char topic_url[UBII_MAX_URL_SIZE];
     char client_name[UBII_MAX_NAME_SIZE];
     char client_id[48];
+    /* Fields of the registration's Client that an optional part of the API adds (a
+     * ubii_clients_Client *, which this header does not know): ubii/processing.h. */
+    void (*complete_registration)(struct ubii_node *node, void *client);
+    const void *offered_modules; /* const ubii_encoded_message * */
+    size_t offered_module_count;
 
     ubii_state state;
     /* State changes made outside poll() (by start) are announced at the next poll(). */
