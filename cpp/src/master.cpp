@@ -104,11 +104,23 @@ Call<Session> Sessions::start(Session session)
     return call<Session>(std::move(request));
 }
 
-Call<Success> Sessions::stop(const std::string &id)
+Call<Session> Sessions::stop(const std::string &id)
 {
     ServiceRequest request = request_for(service_topics::session_stop);
     request.mutable_session()->set_id(id);
-    return call<Success>(std::move(request));
+    auto state = std::make_shared<detail::CallState<Session>>();
+    state->service = service_topics::session_stop;
+    Sessions lookup = *this;
+    call<ServiceReply>(std::move(request))
+        .then([state, lookup, id](const Result<ServiceReply> &stopped) mutable {
+            if (!stopped.ok() && stopped.status() != Status::broker) { // no answer at all
+                state->resolve(Result<Session>::failure(stopped.error()));
+                return;
+            }
+            lookup.get(id).then(
+                [state](const Result<Session> &session) { state->resolve(session); });
+        });
+    return Call<Session>(std::move(state));
 }
 
 Call<SessionList> Sessions::save(Session session)

@@ -331,13 +331,16 @@ void ModuleRunner::finish(Finished finished)
         return;
     }
     errors_in_a_row_ = 0;
-    for (const auto &[output, value] : finished.outputs) {
+    for (const PassOutput &output : finished.outputs) {
         Status status = Status::unsupported;
         std::string why = "nothing publishes outputs (Scheduler::on_output)";
         if (context_.output) {
             try {
-                status = context_.output(*module_, output, value);
+                status = context_.output(*module_, output);
                 why = describe(status);
+            } catch (const Error &error) { // the sink's own account of why, e.g. a wiring's
+                status = error.status();
+                why = error.what();
             } catch (...) {
                 status = Status::callback_threw;
                 why = "the output sink threw: " + what_of(std::current_exception());
@@ -345,7 +348,7 @@ void ModuleRunner::finish(Finished finished)
         }
         if (status != Status::ok) {
             ++outputs_failed_;
-            report(status, who() + ": output \"" + output + "\" not published: " + why);
+            report(status, who() + ": output \"" + output.name + "\" not published: " + why);
         }
     }
 }
@@ -389,8 +392,8 @@ void ModuleRunner::run_due()
     }
 }
 
-std::vector<std::pair<std::string, Value>> ModuleRunner::step(const std::vector<Record> &inputs,
-                                                              std::chrono::nanoseconds delta)
+std::vector<PassOutput> ModuleRunner::step(const std::vector<Record> &inputs,
+                                           std::chrono::nanoseconds delta)
 {
     if (!std::holds_alternative<Lockstep>(module_->description().mode))
         throw StateError(who() + " runs in " + std::string(mode_name(module_->description().mode)) +

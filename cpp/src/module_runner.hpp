@@ -65,8 +65,7 @@ class ModuleRunner
         return in_flight_;
     }
     void run_due();
-    std::vector<std::pair<std::string, Value>> step(const std::vector<Record> &inputs,
-                                                    std::chrono::nanoseconds delta);
+    std::vector<PassOutput> step(const std::vector<Record> &inputs, std::chrono::nanoseconds delta);
     Timing timing() const;
 
   private:
@@ -82,7 +81,7 @@ class ModuleRunner
         std::vector<MuxEntry> muxed;
     };
     struct Finished {
-        std::vector<std::pair<std::string, Value>> outputs;
+        std::vector<PassOutput> outputs;
         std::exception_ptr error;
         Clock::duration execution{};
     };

@@ -202,9 +202,9 @@ Stats Node::stats() const
     return core_->stats();
 }
 
-bool Node::implements(Behaviour behaviour) const noexcept
+bool Node::implements(Behaviour) const noexcept
 {
-    return behaviour != Behaviour::processing_modules;
+    return true;
 }
 
 bool Node::usable(Behaviour behaviour) const noexcept
@@ -304,6 +304,22 @@ void Node::queue_call(const ServiceRequest &request, std::chrono::milliseconds t
 Master Node::master()
 {
     return Master(*this);
+}
+
+void Node::serve_sessions(ModuleRegistry modules)
+{
+    core_->session_host().serve(std::move(modules));
+}
+
+void Node::on_session_event(SessionEventHandler handler)
+{
+    core_->session_host().on_event(std::move(handler));
+}
+
+std::vector<SessionModule> Node::session_modules() const
+{
+    const detail::SessionHost *host = core_->session_host_if_any();
+    return host != nullptr ? host->modules() : std::vector<SessionModule>{};
 }
 
 Sessions Node::sessions()

@@ -137,10 +137,9 @@ NodeCore::NodeCore(NodeOptions options, const ubii_port *port)
           "cannot set the node up (service URL \"" + options_.service_url + "\", name \"" +
               options_.name + "\")");
     scheduler_ = std::make_unique<Scheduler>();
-    scheduler_->on_output(
-        [this](const ProcessingModule &module, std::string_view output, const Value &value) {
-            return publish_output(module, output, value);
-        });
+    scheduler_->on_output([this](const ProcessingModule &module, const PassOutput &output) {
+        return publish_output(module, output);
+    });
     scheduler_->on_error(
         [this](Status status, std::string_view detail) { report(status, std::string(detail)); });
     if (owned_port_)
@@ -164,6 +163,8 @@ NodeCore::~NodeCore()
     state_handler_ = nullptr;
     error_handler_ = nullptr;
     waiting_.clear();
+    if (session_host_)
+        session_host_->clear();
     scheduler_.reset(); // joins worker threads; their modules' on_destroyed runs here
     module_wirings_.clear();
     if (ubii_node_state(node_.get()) != UBII_STATE_STOPPED)
@@ -448,7 +449,7 @@ std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const
         if (!declared(description.outputs, output.output))
             throw NotFound("processing module \"" + description.name + "\" has no output \"" +
                            output.output + "\" to wire to " + output.topic);
-        wired.outputs[output.output] = output.topic;
+        wired.outputs[output.output] = output;
     }
     // Compiled before the module is added, so that a bad pattern leaves nothing behind.
     std::vector<std::shared_ptr<const std::regex>> identities(wiring.inputs().size());
@@ -463,11 +464,24 @@ std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const
                                   "\" of input \"" + input.input + "\": " + error.what());
         }
     }
-    const auto type_of = [&description](const std::string &name) {
-        return std::find_if(description.inputs.begin(), description.inputs.end(),
-                            [&name](const ModuleIO &io) { return io.name == name; })
-            ->type();
+    // TopicMux.data_type, else the input's own message format: a filter, not an error.
+    const auto mux_filter = [&description](const Wiring::Input &input) {
+        const RecordType own =
+            std::find_if(description.inputs.begin(), description.inputs.end(),
+                         [&input](const ModuleIO &io) { return io.name == input.input; })
+                ->type();
+        if (input.data_type != RecordType::NONE && own != RecordType::NONE &&
+            input.data_type != own)
+            throw InvalidArgument("mux input \"" + input.input + "\" takes " +
+                                  std::string(message_format(own)) + ", not " +
+                                  std::string(message_format(input.data_type)));
+        return input.data_type != RecordType::NONE ? input.data_type : own;
     };
+    std::vector<RecordType> filters(wiring.inputs().size(), RecordType::NONE);
+    for (std::size_t i = 0; i < wiring.inputs().size(); ++i) {
+        if (wiring.inputs()[i].mux)
+            filters[i] = mux_filter(wiring.inputs()[i]);
+    }
 
     const std::string id = scheduler_->add(std::move(module));
     try {
@@ -482,9 +496,8 @@ std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const
             }
             wired.subscriptions.push_back(subscribe(
                 input.topic, true,
-                [this, id, name = input.input, type = type_of(input.input),
+                [this, id, name = input.input, type = filters[i],
                  identity = identities[i]](const Record &record) {
-                    // TopicMux.data_type: a filter, not an error.
                     if (type != RecordType::NONE && type != record.type())
                         return;
                     scheduler_->feed_muxed(id, name, identity_of(record.topic(), identity.get()),
@@ -503,16 +516,25 @@ std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const
     return id;
 }
 
-Status NodeCore::publish_output(const ProcessingModule &module, std::string_view output,
-                                const Value &value) noexcept
+Status NodeCore::publish_output(const ProcessingModule &module, const PassOutput &output)
 {
     const auto wiring = module_wirings_.find(module.id());
     if (wiring == module_wirings_.end())
         return Status::ok;
-    const auto topic = wiring->second.outputs.find(output);
-    if (topic == wiring->second.outputs.end())
+    const auto found = wiring->second.outputs.find(output.name);
+    if (found == wiring->second.outputs.end())
         return Status::ok; // not wired: not published, as Wiring says
-    return publish_value(*this, topic->second, value);
+    const Wiring::Output &wired = found->second;
+    if (!wired.demux)
+        return publish_value(*this, wired.topic, output.value);
+    if (!output.demuxed)
+        throw WrongType("it is wired to the demultiplexer \"" + wired.topic +
+                        "\": set its elements with Pass::add_demuxed_output");
+    if (wired.data_type != RecordType::NONE && output.value.type() != wired.data_type)
+        throw WrongType("its demultiplexer takes " +
+                        std::string(record_type_name(wired.data_type)) + ", not " +
+                        std::string(record_type_name(output.value.type())));
+    return publish_value(*this, demux_topic(wired.topic, output.topic_params), output.value);
 }
 
 void NodeCore::remove_module(const std::string &id) noexcept
@@ -534,14 +556,21 @@ void NodeCore::remove_module(const std::string &id) noexcept
 
 bool NodeCore::usable(Behaviour behaviour) const noexcept
 {
-    return behaviour != Behaviour::processing_modules && state() == ConnectionState::ready;
+    if (behaviour == Behaviour::processing_modules && !(session_host_ && session_host_->serving()))
+        return false;
+    return state() == ConnectionState::ready;
 }
 
 void NodeCore::when_usable(Behaviour behaviour, std::function<void()> action)
 {
-    if (behaviour == Behaviour::processing_modules)
-        throw Unsupported("ubii::Node does not implement the processing_modules behaviour");
     waiting_.emplace_back(behaviour, std::move(action));
+}
+
+SessionHost &NodeCore::session_host()
+{
+    if (!session_host_)
+        session_host_ = std::make_unique<SessionHost>(*this);
+    return *session_host_;
 }
 
 Stats NodeCore::stats() const noexcept

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "linux_port_owner.hpp"
+#include "session_host.hpp"
 #include "ubii/node.hpp"
 #include "ubii/running_module.hpp"
 #include "ubii/scheduler.hpp"
@@ -110,6 +111,14 @@ class NodeCore
     // that the per-record path builds no string).
     template <class Where, class F> void guard(const Where &where, F &&code) noexcept;
     void report(Status status, const std::string &detail) noexcept;
+    void report_exception(const std::string &where, std::exception_ptr error) noexcept;
+
+    // The node's part in sessions, made when first asked for.
+    SessionHost &session_host();
+    const SessionHost *session_host_if_any() const noexcept
+    {
+        return session_host_.get();
+    }
 
   private:
     static void on_state(ubii_node *, ubii_state previous, ubii_state current, ubii_status reason,
@@ -120,14 +129,14 @@ class NodeCore
     void mirror(ubii_state current, ubii_status reason);
     void settle();
     void after_poll();
-    void report_exception(const std::string &where, std::exception_ptr error) noexcept;
     void wait_for_io(std::chrono::milliseconds timeout);
-    Status publish_output(const ProcessingModule &module, std::string_view output,
-                          const Value &value) noexcept;
+    // Throws ubii::Error subclasses for an output its wiring cannot take (the scheduler reports
+    // them with the module's name).
+    Status publish_output(const ProcessingModule &module, const PassOutput &output);
 
     struct ModuleWiring {
         std::vector<std::uint64_t> subscriptions;
-        std::map<std::string, std::string, std::less<>> outputs;
+        std::map<std::string, Wiring::Output, std::less<>> outputs;
     };
 
     NodeOptions options_;
@@ -147,6 +156,7 @@ class NodeCore
     std::map<std::string, ModuleWiring, std::less<>> module_wirings_;
     // Destroyed first (~NodeCore): modules end while the node they publish on still stands.
     std::unique_ptr<Scheduler> scheduler_;
+    std::unique_ptr<SessionHost> session_host_;
     std::uint64_t callback_errors_ = 0;
     std::uint64_t type_mismatches_ = 0;
     int poll_depth_ = 0;

@@ -116,7 +116,7 @@ const std::vector<MuxedRecord> &Pass::muxed(std::string_view input) const
     return find(input).muxed;
 }
 
-void Pass::set_output(std::string_view output, Value value)
+const ModuleIO &Pass::checked_output(std::string_view output, const Value &value) const
 {
     const auto declared = std::find_if(declared_outputs_->begin(), declared_outputs_->end(),
                                        [output](const ModuleIO &io) { return io.name == output; });
@@ -129,13 +129,34 @@ void Pass::set_output(std::string_view output, Value value)
         throw WrongType("output \"" + std::string(output) + "\" takes " +
                         std::string(message_format(wanted)) + ", not " +
                         std::string(message_format(value.type())));
+    return *declared;
+}
+
+void Pass::set_output(std::string_view output, Value value)
+{
+    checked_output(output, value);
     for (auto &set : outputs_) {
-        if (set.first == output) {
-            set.second = std::move(value);
+        if (set.name == output) {
+            if (set.demuxed)
+                throw StateError("output \"" + std::string(output) +
+                                 "\" holds demultiplexed elements already");
+            set.value = std::move(value);
             return;
         }
     }
-    outputs_.emplace_back(std::string(output), std::move(value));
+    outputs_.push_back(PassOutput{std::string(output), std::move(value), false, {}});
+}
+
+void Pass::add_demuxed_output(std::string_view output, Value value,
+                              std::vector<std::string> topic_params)
+{
+    checked_output(output, value);
+    for (const auto &set : outputs_) {
+        if (set.name == output && !set.demuxed)
+            throw StateError("output \"" + std::string(output) + "\" was set as a single value");
+    }
+    outputs_.push_back(
+        PassOutput{std::string(output), std::move(value), true, std::move(topic_params)});
 }
 
 ProcessingModule::ProcessingModule(ModuleDescription description)
@@ -157,6 +178,8 @@ ProcessingModuleSpec ProcessingModule::spec() const
     ProcessingModuleSpec spec;
     spec.set_id(id_);
     spec.set_name(description_.name);
+    spec.set_session_id(session_id_);
+    spec.set_node_id(node_id_);
     spec.set_description(description_.description);
     for (const auto &author : description_.authors)
         spec.add_authors(author);

@@ -7,21 +7,60 @@ namespace ubii
 
 Wiring &Wiring::input(std::string input, std::string topic)
 {
-    inputs_.push_back(Input{std::move(input), std::move(topic), false, {}});
+    inputs_.push_back(Input{std::move(input), std::move(topic), false, {}, RecordType::NONE});
     return *this;
 }
 
-Wiring &Wiring::mux_input(std::string input, std::string topic_regex, std::string identity_pattern)
+Wiring &Wiring::mux_input(std::string input, std::string topic_regex, std::string identity_pattern,
+                          RecordType data_type)
 {
-    inputs_.push_back(
-        Input{std::move(input), std::move(topic_regex), true, std::move(identity_pattern)});
+    inputs_.push_back(Input{std::move(input), std::move(topic_regex), true,
+                            std::move(identity_pattern), data_type});
     return *this;
 }
 
 Wiring &Wiring::output(std::string output, std::string topic)
 {
-    outputs_.push_back(Output{std::move(output), std::move(topic)});
+    outputs_.push_back(Output{std::move(output), std::move(topic), false, RecordType::NONE});
     return *this;
+}
+
+Wiring &Wiring::demux_output(std::string output, std::string topic_format, RecordType data_type)
+{
+    outputs_.push_back(Output{std::move(output), std::move(topic_format), true, data_type});
+    return *this;
+}
+
+std::string demux_topic(std::string_view format, const std::vector<std::string> &params)
+{
+    static constexpr std::string_view open = "{{#", close = "}}";
+    std::string topic;
+    std::size_t at = 0;
+    for (;;) {
+        const std::size_t start = format.find(open, at);
+        const std::size_t end =
+            start == std::string_view::npos ? start : format.find(close, start + open.size());
+        if (end == std::string_view::npos) {
+            topic.append(format.substr(at));
+            return topic;
+        }
+        const std::string_view digits =
+            format.substr(start + open.size(), end - start - open.size());
+        const bool numeric = !digits.empty() && digits.size() < 6 &&
+                             digits.find_first_not_of("0123456789") == std::string_view::npos;
+        topic.append(format.substr(at, start - at));
+        if (!numeric) { // not a placeholder: kept as it is
+            topic.append(format.substr(start, end + close.size() - start));
+        } else {
+            const std::size_t index = std::stoul(std::string(digits));
+            if (index >= params.size())
+                throw InvalidArgument("topic format \"" + std::string(format) +
+                                      "\" needs parameter " + std::to_string(index) +
+                                      ", the element has " + std::to_string(params.size()));
+            topic.append(params[index]);
+        }
+        at = end + close.size();
+    }
 }
 
 RunningModule::RunningModule(std::weak_ptr<detail::NodeCore> node, std::string id)

@@ -174,8 +174,8 @@ std::vector<Record> Scheduler::step(std::string_view id, const std::vector<Recor
                                     std::chrono::nanoseconds delta)
 {
     std::vector<Record> outputs;
-    for (auto &[output, value] : impl_->find(id).step(inputs, delta))
-        outputs.emplace_back(std::move(output), std::move(value));
+    for (PassOutput &output : impl_->find(id).step(inputs, delta))
+        outputs.emplace_back(std::move(output.name), std::move(output.value));
     return outputs;
 }
 

@@ -10,8 +10,8 @@
 //   publishing          records reach the master: ready
 //   services            service calls go out: ready
 //   devices             device registration (a service): ready
-//   processing_modules  running processing modules for sessions: not implemented by ubii::Node
-//                       yet (implements() says false)
+//   processing_modules  running the processing modules sessions assign to the node: usable once
+//                       the node serves sessions (Node::serve_sessions) and is ready
 
 #include <string_view>
 

@@ -108,10 +108,12 @@ class Sessions : public detail::ServiceGroup
     // Starts a session from its spec (or, by name, one the master has stored); the reply is the
     // session as the master runs it, with the id it assigned.
     Call<Session> start(Session session);
-    // Stops the session with `id`. The npm 0.4.0 master replies success, or an error if no such
-    // session runs; the current master always replies with an error (SESSIONS.md §1.3), which
-    // the call passes on as ServiceError.
-    Call<Success> stop(const std::string &id);
+    // Stops the session with `id`, and resolves with the session as the master holds it then
+    // (the current master marks it STOPPED only once every node reported its modules removed).
+    // The stop's own reply says nothing: the current master answers every stop with an error,
+    // done or not (SESSIONS.md §1.3), the npm 0.4.0 master one when the session was not running.
+    // So the session is looked up after it: ServiceError if the master has no session `id`.
+    Call<Session> stop(const std::string &id);
     // Saves a session spec in the master's database; the reply lists the sessions it created.
     Call<SessionList> save(Session session);
 };

@@ -35,6 +35,7 @@
 #include "ubii/behaviour.hpp"
 #include "ubii/error.hpp"
 #include "ubii/messages.hpp"
+#include "ubii/module_registry.hpp"
 #include "ubii/node_options.hpp"
 #include "ubii/port.h"
 #include "ubii/protocol.hpp"
@@ -42,6 +43,7 @@
 #include "ubii/running_module.hpp"
 #include "ubii/scheduler.hpp"
 #include "ubii/service_call.hpp"
+#include "ubii/session_events.hpp"
 
 struct ubii_node;
 
@@ -159,6 +161,7 @@ class Node
     using StateHandler =
         std::function<void(ConnectionState previous, ConnectionState current, Status reason)>;
     using ErrorHandler = std::function<void(Status status, std::string_view detail)>;
+    using SessionEventHandler = std::function<void(const SessionEvent &)>;
 
     // Creates the Linux port (ubii::Error if libzmq or libwebsockets cannot start).
     explicit Node(NodeOptions options = {});
@@ -290,6 +293,27 @@ class Node
     RunningModule run(std::unique_ptr<ProcessingModule> module, const Wiring &wiring = {});
     // The node's scheduler: module timing, lockstep steps, modules added without wiring.
     Scheduler &scheduler() noexcept;
+
+    // ---- sessions -----------------------------------------------------------------------------
+    // Takes part in the sessions masters start (SESSIONS.md): offers `modules` at registration
+    // (Client.processing_modules; dedicated: NodeOptions::is_dedicated_processing_node), and when
+    // a start record assigns one of them to this node's client id, makes it, keeps the master's
+    // ids, wires it by the session's IO mappings (topic, topic_mux, topic_demux), starts it and
+    // reports it (runtime/add); a stop record halts and destroys the session's modules, cancels
+    // their subscriptions and reports them (runtime/remove). Call it before connect(): the offer
+    // goes with registrations from then on. Once per node (ubii::StateError after).
+    //
+    // What goes wrong is an error event and a SessionEvent::failed, and the rest goes on: an
+    // unknown module name or on_created throwing (that module is not run nor reported), a mapping
+    // naming an input or output the module lacks (that entry is left out), the master refusing a
+    // report. A start record for modules already running changes nothing. After a reconnection
+    // the modules go on under the ids the master gave them (a session keeps its node ids and its
+    // stop record still reaches this node); if the master itself restarted (another master id),
+    // its sessions are gone and their modules are stopped.
+    void serve_sessions(ModuleRegistry modules);
+    void on_session_event(SessionEventHandler handler);
+    // The modules this node runs for sessions now.
+    std::vector<SessionModule> session_modules() const;
 
     // ---- external event loops -----------------------------------------------------------------
     // The file descriptors to wait on (see ubii_node_pollfds); returns how many there are, which

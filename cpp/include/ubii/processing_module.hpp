@@ -43,7 +43,8 @@ namespace ubii
 namespace detail
 {
 class ModuleRunner;
-}
+class SessionHost;
+} // namespace detail
 
 // The module's status, as ubii.processing.ProcessingModule.Status.
 enum class ProcessingStatus { initialized, created, processing, halted, destroyed };
@@ -127,6 +128,15 @@ struct MuxedRecord {
     std::shared_ptr<const Record> record;
 };
 
+// A value a pass set on an output. A demultiplexed element's `topic_params` fill the `{{#0}}`,
+// `{{#1}}`, ... of the topic format its output is wired to (TopicDemux.output_topic_format).
+struct PassOutput {
+    std::string name;
+    Value value;
+    bool demuxed = false;
+    std::vector<std::string> topic_params;
+};
+
 // One pass of a module: its inputs as they were when the pass began, and the outputs it sets.
 class Pass
 {
@@ -176,22 +186,28 @@ class Pass
     {
         set_output(output, Value(std::forward<T>(value)));
     }
-    const std::vector<std::pair<std::string, Value>> &outputs() const noexcept
+    // Adds one element to `output` for a demultiplexer (a session's TopicDemux): published on the
+    // topic its format makes of `topic_params`. Every element added is published, in order.
+    // The same errors as set_output; ubii::StateError if set_output set the output already.
+    void add_demuxed_output(std::string_view output, Value value,
+                            std::vector<std::string> topic_params);
+    const std::vector<PassOutput> &outputs() const noexcept
     {
         return outputs_;
     }
-    std::vector<std::pair<std::string, Value>> take_outputs() noexcept
+    std::vector<PassOutput> take_outputs() noexcept
     {
         return std::move(outputs_);
     }
 
   private:
     const Input &find(std::string_view input) const;
+    const ModuleIO &checked_output(std::string_view output, const Value &value) const;
     [[noreturn]] static void throw_no_record(std::string_view input);
 
     std::vector<Input> inputs_;
     const std::vector<ModuleIO> *declared_outputs_;
-    std::vector<std::pair<std::string, Value>> outputs_;
+    std::vector<PassOutput> outputs_;
     std::chrono::nanoseconds delta_;
     std::uint64_t number_;
 };
@@ -221,6 +237,16 @@ class ProcessingModule
     {
         return id_;
     }
+    // In a session: the session's id and the id of the node the master assigned the module to
+    // ("" otherwise).
+    const std::string &session_id() const noexcept
+    {
+        return session_id_;
+    }
+    const std::string &node_id() const noexcept
+    {
+        return node_id_;
+    }
     // The lifecycle as a protocol (INITIALIZED -> CREATED -> PROCESSING <-> HALTED -> DESTROYED):
     // hook its transitions to watch a module.
     ProcessingProtocol &lifecycle() noexcept
@@ -248,9 +274,12 @@ class ProcessingModule
 
   private:
     friend class detail::ModuleRunner;
+    friend class detail::SessionHost;
     ModuleDescription description_;
     ProcessingProtocol lifecycle_;
     std::string id_;
+    std::string session_id_;
+    std::string node_id_;
 };
 
 // A module whose pass is a function, for modules too small to deserve a class.

@@ -5,8 +5,8 @@
 // (ubii::Node calls it from poll(); a game engine or test may own one directly).
 //
 //     ubii::Scheduler scheduler;                       // steady clock; ManualClock in tests
-//     scheduler.on_output([&](const ubii::ProcessingModule &, std::string_view output,
-//                             const ubii::Value &value) { ...; return ubii::Status::ok; });
+//     scheduler.on_output([&](const ubii::ProcessingModule &, const ubii::PassOutput &output) {
+//         ...; return ubii::Status::ok; });
 //     const std::string id = scheduler.add(std::make_unique<Sum>());
 //     scheduler.start(id);
 //     for (;;) { wait_until(scheduler.next_due()); scheduler.run_due(); }
@@ -37,10 +37,10 @@ namespace ubii
 class Scheduler
 {
   public:
-    // Publishes one output a pass set: Status::ok, or why not (counted as Timing::outputs_failed
-    // and reported).
-    using OutputSink = std::function<Status(const ProcessingModule &module, std::string_view output,
-                                            const Value &value)>;
+    // Publishes one output a pass set (each demultiplexed element on its own): Status::ok, or why
+    // not (counted as Timing::outputs_failed and reported).
+    using OutputSink =
+        std::function<Status(const ProcessingModule &module, const PassOutput &output)>;
     // Errors of modules: passes that threw (Status::callback_threw), records of the wrong type
     // (Status::wrong_type), outputs not published; the detail names the module.
     using ErrorHandler = std::function<void(Status status, std::string_view detail)>;

@@ -7,6 +7,7 @@
 #include "ubii/error.hpp"
 #include "ubii/master.hpp"
 #include "ubii/messages.hpp"
+#include "ubii/module_registry.hpp"
 #include "ubii/node.hpp"
 #include "ubii/node_options.hpp"
 #include "ubii/processing_module.hpp"
@@ -17,6 +18,7 @@
 #include "ubii/running_module.hpp"
 #include "ubii/scheduler.hpp"
 #include "ubii/service_call.hpp"
+#include "ubii/session_events.hpp"
 #include "ubii/timing.hpp"
 #include "ubii/value.hpp"
 

@@ -28,12 +28,12 @@ class SchedulerTest : public ::testing::Test
   protected:
     SchedulerTest() : scheduler(clock)
     {
-        scheduler.on_output([this](const ubii::ProcessingModule &module, std::string_view output,
-                                   const ubii::Value &value) {
-            published.push_back(
-                {module.name(), std::string(output), value, std::this_thread::get_id()});
-            return ubii::Status::ok;
-        });
+        scheduler.on_output(
+            [this](const ubii::ProcessingModule &module, const ubii::PassOutput &output) {
+                published.push_back(
+                    {module.name(), output.name, output.value, std::this_thread::get_id()});
+                return ubii::Status::ok;
+            });
         scheduler.on_error([this](ubii::Status status, std::string_view detail) {
             errors.emplace_back(status, std::string(detail));
         });
@@ -344,7 +344,7 @@ TEST_F(SchedulerTest, AModuleHaltsAfterTheConfiguredErrorsInARow)
 
 TEST_F(SchedulerTest, OutputsThatCannotBePublishedAreCountedAndReported)
 {
-    scheduler.on_output([](const ubii::ProcessingModule &, std::string_view, const ubii::Value &) {
+    scheduler.on_output([](const ubii::ProcessingModule &, const ubii::PassOutput &) {
         return ubii::Status::would_block;
     });
     const std::string id = add(ubii::Free{}, [](Pass &pass) { pass.set_output("sum", 1.0); });
