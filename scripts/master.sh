@@ -10,21 +10,23 @@
 # The package comes from scripts/npm-packages.sh (UBII_CACHE_DIR). A master that does not report
 # ready within UBII_MASTER_START_TIMEOUT seconds (default 20) is killed and its log printed.
 # UBII_MASTER_TLS=1 serves WebSocket and HTTP over TLS (wss://, https://) with a self-signed
-# certificate made in STATE_DIR.
+# certificate made in STATE_DIR. UBII_MASTER_SOURCE=DIR runs the current master from a checkout
+# that scripts/current-master.sh prepared, instead of the npm package.
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
 cache=${UBII_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/libubii}
-install_dir="$cache/npm/master"
+install_dir=${UBII_MASTER_SOURCE:-$cache/npm/master}
 start_timeout=${UBII_MASTER_START_TIMEOUT:-20}
 bind_errors='Address already in use|EADDRINUSE|EACCES'
 
-usage() { sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+usage() { sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 
 prepare() {
   local state=$1 base=$2
   if [ ! -f "$install_dir/.ubii-stamp" ]; then
-    echo "master.sh: the master is not installed in $install_dir; run scripts/npm-packages.sh first" >&2
+    echo "master.sh: the master is not installed in $install_dir; run scripts/npm-packages.sh (or" \
+      "scripts/current-master.sh for UBII_MASTER_SOURCE) first" >&2
     exit 1
   fi
   mkdir -p "$state/home"
@@ -35,18 +37,23 @@ prepare() {
     openssl rsa -in "$state/key.pem" -pubout -out "$state/public.pem" >/dev/null 2>&1
     https="\"enabled\": true, \"pathCert\": \"$state/cert.pem\", \"pathPrivateKey\": \"$state/key.pem\", \"pathPublicKey\": \"$state/public.pem\""
   fi
-  # https.enabled must be given: the master treats a missing key as true.
+  # https.enabled must be given: the master treats a missing key as true. allowedHosts and
+  # profiling are the current master's (the npm one ignores them).
   cat > "$state/config.json" <<JSON
 { "ports": { "serviceZMQ": $base, "serviceREST": $((base + 1)),
              "topicdataZMQ": $((base + 2)), "topicdataWS": $((base + 3)) },
   "ipc": { "ipcEndpointTopicData": "/ubii-ipc-topicdata" },
-  "https": { $https, "allowedOrigins": [] } }
+  "https": { $https, "allowedOrigins": [] },
+  "allowedHosts": [".*"], "profiling": { "enabled": false } }
 JSON
 }
 
 # The master writes its database under $HOME and an IPC socket into its working directory.
 launch() {
   local state=$1
+  # The current master reads config.json beside its node_modules, not in its working directory:
+  # one master at a time per checkout.
+  [ -z "${UBII_MASTER_SOURCE:-}" ] || cp "$state/config.json" "$install_dir/config.json"
   cd "$state"
   HOME="$state/home" PWD="$state" exec node --no-warnings "$here/master/launch-master.js" "$install_dir"
 }

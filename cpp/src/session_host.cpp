@@ -148,10 +148,12 @@ void SessionHost::on_start(const Record &record)
     for (const ProcessingModuleSpec &assigned : session.processing_modules()) {
         if (own_id.empty() || assigned.node_id() != own_id)
             continue;
-        if (hosted_.count(assigned.id()) > 0)
+        if (hosted_.count(assigned.id()) > 0 || failed_.count(assigned.id()) > 0)
             continue; // a repeated start record, or the master's last one on (re)subscribing
         if (host(session, assigned))
             started.push_back(assigned.id());
+        else if (!assigned.id().empty())
+            failed_[assigned.id()] = session.id();
     }
     if (!started.empty())
         send_report(report_request(runtime_add, started, ProcessingModuleSpec::PROCESSING),
@@ -267,6 +269,8 @@ void SessionHost::on_stop(const Record &record)
     if (record.type() != RecordType::SESSION)
         return;
     const std::string &session_id = record.as<Session>().id();
+    for (auto it = failed_.begin(); it != failed_.end();)
+        it = it->second == session_id ? failed_.erase(it) : std::next(it);
     std::vector<std::string> ids;
     for (const auto &[id, hosted] : hosted_) {
         if (hosted.session_id == session_id)

@@ -82,6 +82,9 @@ class SessionHost
     std::uint64_t start_subscription_ = 0;
     std::uint64_t stop_subscription_ = 0;
     std::map<std::string, Hosted> hosted_; // by the module's (master-assigned) id
+    // Modules that could not run, by id, with their session's id: a repeated start record does
+    // not try (and report) them again; their session's stop forgets them.
+    std::map<std::string, std::string> failed_;
     std::optional<std::string> master_id_;
     EventHandler handler_;
     // Calls still pending when the host is gone resolve into nothing.

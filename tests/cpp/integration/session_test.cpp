@@ -1,0 +1,489 @@
+// Sessions against a master that assigns processing modules to nodes: the current master, run
+// from a checkout (scripts/current-master.sh; the npm 0.4.0 master runs every session module
+// itself and tells nodes nothing: PROTOCOL.md Appendix A). The official Node.js node is the other
+// party: it publishes the inputs, receives the outputs, and runs a JavaScript module of its own.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+
+#include "child_process.h"
+#include "cpp_test_support.hpp"
+#include "test_node.h"
+
+using namespace std::chrono_literals;
+using ubii::Pass;
+using ubii::SessionEvent;
+
+namespace
+{
+
+std::atomic<int> broken_created{0};
+
+// A working directory of the Node.js peer's own (its module database lives there).
+std::string peer_dir(const std::string &name)
+{
+    const char *base = std::getenv("UBII_SESSION_PEER_DIR");
+    const std::string dir = std::string(base != nullptr ? base : "/tmp") + "/" + name;
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+class Doubler : public ubii::ProcessingModule
+{
+  public:
+    Doubler()
+        : ProcessingModule({"libubii_doubler",
+                            "y = 2x",
+                            {ubii::input<double>("x")},
+                            {ubii::output<double>("y")},
+                            ubii::TriggerOnInput{}})
+    {
+    }
+    void on_processing(Pass &pass) override
+    {
+        pass.set_output("y", 2 * pass.input<double>("x"));
+    }
+};
+
+class Offset : public ubii::ProcessingModule
+{
+  public:
+    Offset()
+        : ProcessingModule({"libubii_offset",
+                            "y = x + 1000",
+                            {ubii::input<double>("x")},
+                            {ubii::output<double>("y")},
+                            ubii::TriggerOnInput{}})
+    {
+    }
+    void on_processing(Pass &pass) override
+    {
+        pass.set_output("y", pass.input<double>("x") + 1000);
+    }
+};
+
+class Broken : public ubii::ProcessingModule
+{
+  public:
+    Broken() : ProcessingModule({"libubii_broken", "", {}, {ubii::output<double>("y")}})
+    {
+    }
+    void on_created() override
+    {
+        ++broken_created;
+        throw std::runtime_error("no camera attached");
+    }
+    void on_processing(Pass &) override
+    {
+    }
+};
+
+class Gather : public ubii::ProcessingModule
+{
+  public:
+    Gather()
+        : ProcessingModule({"libubii_gather",
+                            "",
+                            {ubii::input<double>("values")},
+                            {ubii::output<double>("sum"), ubii::output<double>("each")},
+                            ubii::TriggerOnInput{}})
+    {
+    }
+    void on_processing(Pass &pass) override
+    {
+        double sum = 0;
+        for (const ubii::MuxedRecord &muxed : pass.muxed("values")) {
+            sum += muxed.record->as<double>();
+            pass.add_demuxed_output("each", muxed.record->as<double>(), {muxed.identity});
+        }
+        pass.set_output("sum", sum);
+    }
+};
+
+// A session spec as a client writes it: modules by name, mappings by module name (the master
+// fills in the ids, SESSIONS.md 1.1).
+struct SessionSpec {
+    ubii::Session session;
+
+    explicit SessionSpec(const std::string &name)
+    {
+        session.set_name(name);
+    }
+    // The module's mapping. (A mapping without input entries makes the current master fail the
+    // start with a TypeError: give a module without inputs none.)
+    ubii::IOMapping &module(const std::string &name)
+    {
+        add_module(name);
+        ubii::IOMapping &mapping = *session.add_io_mappings();
+        mapping.set_processing_module_name(name);
+        return mapping;
+    }
+    void add_module(const std::string &name)
+    {
+        session.add_processing_modules()->set_name(name);
+    }
+};
+
+void map_input(ubii::IOMapping &mapping, const std::string &input, const std::string &topic)
+{
+    auto &entry = *mapping.add_input_mappings();
+    entry.set_input_name(input);
+    entry.set_topic(topic);
+}
+
+void map_output(ubii::IOMapping &mapping, const std::string &output, const std::string &topic)
+{
+    auto &entry = *mapping.add_output_mappings();
+    entry.set_output_name(output);
+    entry.set_topic(topic);
+}
+
+class SessionTest : public ::testing::Test
+{
+  protected:
+    // A dedicated processing node offering `modules`, recording its events and errors.
+    struct ServingNode {
+        std::unique_ptr<ubii::Node> node;
+        std::vector<SessionEvent> events;
+        std::vector<std::string> errors;
+
+        int count(SessionEvent::Kind kind) const
+        {
+            return static_cast<int>(std::count_if(
+                events.begin(), events.end(), [kind](const auto &e) { return e.kind == kind; }));
+        }
+    };
+
+    std::unique_ptr<ServingNode> serving(const std::string &name, ubii::ModuleRegistry modules)
+    {
+        auto serving = std::make_unique<ServingNode>();
+        ubii::NodeOptions options = ubii_cpp_test::options_for(name);
+        options.is_dedicated_processing_node = true;
+        serving->node = std::make_unique<ubii::Node>(options);
+        ServingNode *raw = serving.get();
+        serving->node->on_session_event([raw](const SessionEvent &e) { raw->events.push_back(e); });
+        serving->node->on_error(
+            [raw](ubii::Status, std::string_view detail) { raw->errors.emplace_back(detail); });
+        serving->node->serve_sessions(std::move(modules));
+        serving->node->connect(10s);
+        return serving;
+    }
+
+    void SetUp() override
+    {
+        client = std::make_unique<ubii::Node>(ubii_cpp_test::options_for("session-client"));
+        client->connect(10s);
+    }
+
+    // Polls every node given (and the client) until `done` or `timeout`.
+    bool poll_all(const std::vector<ubii::Node *> &nodes, const std::function<bool()> &done,
+                  std::chrono::milliseconds timeout)
+    {
+        const auto until = std::chrono::steady_clock::now() + timeout;
+        while (!done()) {
+            if (std::chrono::steady_clock::now() > until)
+                return false;
+            client->poll(2ms);
+            for (ubii::Node *node : nodes)
+                node->poll(2ms);
+        }
+        return true;
+    }
+
+    ubii::Session start(const std::vector<ubii::Node *> &nodes, const ubii::Session &spec)
+    {
+        auto call = client->sessions().start(spec);
+        EXPECT_TRUE(poll_all(
+            nodes, [&] { return call.done(); }, 10s));
+        return call.get();
+    }
+
+    ubii::sessions::SessionStatus status_of(const std::vector<ubii::Node *> &nodes,
+                                            const std::string &id)
+    {
+        auto call = client->sessions().get(id);
+        poll_all(
+            nodes, [&] { return call.done(); }, 5s);
+        return call.get().status();
+    }
+
+    bool reaches(const std::vector<ubii::Node *> &nodes, const std::string &id,
+                 ubii::sessions::SessionStatus status)
+    {
+        const auto until = std::chrono::steady_clock::now() + 15s;
+        while (std::chrono::steady_clock::now() < until) {
+            if (status_of(nodes, id) == status)
+                return true;
+            poll_all(
+                nodes, [] { return false; }, 100ms);
+        }
+        return false;
+    }
+
+    std::unique_ptr<ubii::Node> client;
+};
+
+TEST_F(SessionTest, ALibubiiModuleServesTheNodejsNodeAndStopsCleanly)
+{
+    ubii::ModuleRegistry modules;
+    modules.add<Doubler>();
+    auto worker = serving("libubii-worker", std::move(modules));
+    ubii_test::ChildProcess peer({"node", UBII_SESSION_PEER, UBII_NODEJS_CLIENT,
+                                  ubii_test::service_url(), ubii_test::topic_zmq_url(),
+                                  peer_dir("plain"), "none", "/s1/in", "/s1/out"});
+    ASSERT_TRUE(peer.started());
+
+    SessionSpec spec("one-libubii-module");
+    auto &doubler = spec.module("libubii_doubler");
+    map_input(doubler, "x", "/s1/in");
+    map_output(doubler, "y", "/s1/out");
+    const std::vector<ubii::Node *> nodes{worker->node.get()};
+    const ubii::Session session = start(nodes, spec.session);
+    ASSERT_FALSE(session.id().empty());
+
+    ASSERT_TRUE(poll_all(
+        nodes, [&] { return worker->count(SessionEvent::Kind::confirmed_started) == 1; }, 10s))
+        << (worker->errors.empty() ? "" : worker->errors.front());
+    EXPECT_TRUE(reaches(nodes, session.id(), ubii::sessions::RUNNING))
+        << "the master counts the report";
+    ASSERT_EQ(worker->node->session_modules().size(), 1u);
+    EXPECT_EQ(worker->node->session_modules()[0].session_id, session.id());
+
+    // The Node.js node publishes 1, 2, 3, ...; twice each comes back.
+    std::vector<double> got;
+    ASSERT_TRUE(poll_all(
+        nodes,
+        [&] {
+            for (const std::string &line : peer.lines())
+                if (line.rfind("PEER got ", 0) == 0)
+                    got.push_back(std::stod(line.substr(9)));
+            peer.lines().clear();
+            return got.size() >= 3;
+        },
+        10s));
+    for (double value : got)
+        EXPECT_EQ(static_cast<long long>(value) % 2, 0) << value;
+
+    auto stopped = client->sessions().stop(session.id());
+    ASSERT_TRUE(poll_all(
+        nodes, [&] { return stopped.done(); }, 5s));
+    EXPECT_EQ(stopped.get().id(), session.id())
+        << "the master's error reply to stop is not an error";
+    ASSERT_TRUE(poll_all(
+        nodes, [&] { return worker->count(SessionEvent::Kind::confirmed_removed) == 1; }, 10s));
+    EXPECT_TRUE(worker->node->session_modules().empty());
+    EXPECT_TRUE(reaches(nodes, session.id(), ubii::sessions::STOPPED));
+
+    // The subscription of the module's input is released at the master: nothing more arrives.
+    poll_all(
+        nodes, [] { return false; }, 300ms);
+    const auto received = worker->node->stats().records_received;
+    poll_all(
+        nodes, [] { return false; }, 600ms); // the Node.js node goes on publishing /s1/in
+    EXPECT_EQ(worker->node->stats().records_received, received);
+    EXPECT_TRUE(worker->errors.empty()) << worker->errors.front();
+    peer.stop(SIGTERM, 3s);
+}
+
+TEST_F(SessionTest, ANodejsModuleFeedsALibubiiModuleInOneSession)
+{
+    ubii::ModuleRegistry modules;
+    modules.add<Doubler>();
+    auto worker = serving("libubii-chain", std::move(modules));
+    ubii_test::ChildProcess peer({"node", UBII_SESSION_PEER, UBII_NODEJS_CLIENT,
+                                  ubii_test::service_url(), ubii_test::topic_zmq_url(),
+                                  peer_dir("chain"), "js_negate", "/c/in", "/c/out"});
+    const std::vector<ubii::Node *> nodes{worker->node.get()};
+    ASSERT_TRUE(poll_all(
+        nodes,
+        [&] {
+            return std::any_of(
+                peer.lines().begin(), peer.lines().end(),
+                [](const std::string &line) { return line.rfind("PEER ready", 0) == 0; });
+        },
+        15s))
+        << [&] {
+               std::string all;
+               for (const std::string &line : peer.lines())
+                   all += line + "\n";
+               return all;
+           }();
+
+    SessionSpec spec("chain-across-languages");
+    auto &negate = spec.module("js_negate"); // run by the Node.js node
+    map_input(negate, "x", "/c/in");
+    map_output(negate, "y", "/c/mid");
+    auto &doubler = spec.module("libubii_doubler");
+    map_input(doubler, "x", "/c/mid");
+    map_output(doubler, "y", "/c/out");
+    const ubii::Session session = start(nodes, spec.session);
+    EXPECT_TRUE(reaches(nodes, session.id(), ubii::sessions::RUNNING));
+
+    std::vector<double> got;
+    ASSERT_TRUE(poll_all(
+        nodes,
+        [&] {
+            for (const std::string &line : peer.lines())
+                if (line.rfind("PEER got ", 0) == 0)
+                    got.push_back(std::stod(line.substr(9)));
+            peer.lines().clear();
+            return got.size() >= 3;
+        },
+        15s))
+        << "nothing came back through js_negate and libubii_doubler";
+    for (double value : got)
+        EXPECT_TRUE(value < 0 && static_cast<long long>(value) % 2 == 0) << value;
+    client->sessions().stop(session.id());
+    poll_all(
+        nodes, [&] { return worker->node->session_modules().empty(); }, 10s);
+    peer.stop(SIGTERM, 3s);
+}
+
+TEST_F(SessionTest, TwoDedicatedNodesEachRunTheModuleTheyOffer)
+{
+    ubii::ModuleRegistry first_modules, second_modules;
+    first_modules.add<Doubler>();
+    second_modules.add<Offset>();
+    auto first = serving("libubii-first", std::move(first_modules));
+    auto second = serving("libubii-second", std::move(second_modules));
+    const std::vector<ubii::Node *> nodes{first->node.get(), second->node.get()};
+
+    SessionSpec spec("two-nodes");
+    auto &doubler = spec.module("libubii_doubler");
+    map_input(doubler, "x", "/two/in");
+    map_output(doubler, "y", "/two/mid");
+    auto &offset = spec.module("libubii_offset");
+    map_input(offset, "x", "/two/mid");
+    map_output(offset, "y", "/two/out");
+    const ubii::Session session = start(nodes, spec.session);
+    EXPECT_TRUE(reaches(nodes, session.id(), ubii::sessions::RUNNING));
+    ASSERT_EQ(first->node->session_modules().size(), 1u);
+    ASSERT_EQ(second->node->session_modules().size(), 1u);
+    EXPECT_EQ(first->node->session_modules()[0].name, "libubii_doubler");
+    EXPECT_EQ(second->node->session_modules()[0].name, "libubii_offset");
+
+    std::vector<double> out;
+    auto subscription = client->subscribe<double>(
+        "/two/out", [&](double value, const ubii::RecordInfo &) { out.push_back(value); });
+    poll_all(
+        nodes, [] { return false; }, 300ms);
+    ASSERT_TRUE(poll_all(
+        nodes,
+        [&] {
+            client->publish("/two/in", 21.0);
+            return !out.empty();
+        },
+        10s));
+    EXPECT_EQ(out.front(), 1042);
+    client->sessions().stop(session.id());
+    EXPECT_TRUE(reaches(nodes, session.id(), ubii::sessions::STOPPED));
+}
+
+TEST_F(SessionTest, MuxInputsAndDemuxOutputsThroughTheMaster)
+{
+    ubii::ModuleRegistry modules;
+    modules.add<Gather>();
+    auto worker = serving("libubii-mux", std::move(modules));
+    const std::vector<ubii::Node *> nodes{worker->node.get()};
+
+    SessionSpec spec("mux-demux");
+    auto &gather = spec.module("libubii_gather");
+    auto &mux = *gather.add_input_mappings();
+    mux.set_input_name("values");
+    mux.mutable_topic_mux()->set_topic_selector("^/m/sensor/[a-z]+/value$");
+    mux.mutable_topic_mux()->set_data_type("double");
+    mux.mutable_topic_mux()->set_identity_match_pattern("/sensor/([a-z]+)/");
+    map_output(gather, "sum", "/m/sum");
+    auto &demux = *gather.add_output_mappings();
+    demux.set_output_name("each");
+    demux.mutable_topic_demux()->set_output_topic_format("/m/copy/{{#0}}");
+    demux.mutable_topic_demux()->set_data_type("double");
+    const ubii::Session session = start(nodes, spec.session);
+    EXPECT_TRUE(reaches(nodes, session.id(), ubii::sessions::RUNNING));
+
+    std::map<std::string, double> copies;
+    double sum = 0;
+    auto copies_sub = client->subscribe_regex<double>(
+        "^/m/copy/", [&](double value, const ubii::RecordInfo &info) {
+            copies[std::string(info.topic)] = value;
+        });
+    auto sum_sub = client->subscribe<double>(
+        "/m/sum", [&](double value, const ubii::RecordInfo &) { sum = value; });
+    poll_all(
+        nodes, [] { return false; }, 300ms);
+    ASSERT_TRUE(poll_all(
+        nodes,
+        [&] {
+            client->publish("/m/sensor/a/value", 1.0);
+            client->publish("/m/sensor/b/value", 20.0);
+            client->publish("/m/sensor/c/value", 300.0);
+            client->publish("/m/sensor/d/value", "not a number"); // filtered by data_type
+            return copies.size() >= 3 && sum == 321;
+        },
+        10s))
+        << "sum " << sum << ", " << copies.size() << " copies";
+    EXPECT_EQ(copies["/m/copy/a"], 1);
+    EXPECT_EQ(copies["/m/copy/c"], 300);
+    EXPECT_EQ(copies.count("/m/copy/d"), 0u);
+    client->sessions().stop(session.id());
+    poll_all(
+        nodes, [&] { return worker->node->session_modules().empty(); }, 10s);
+    EXPECT_TRUE(worker->errors.empty()) << worker->errors.front();
+}
+
+TEST_F(SessionTest, BadModulesRepeatedStartsAndUnknownStopsAreHandled)
+{
+    ubii::ModuleRegistry modules;
+    modules.add<Doubler>();
+    modules.add<Broken>();
+    auto worker = serving("libubii-bad", std::move(modules));
+    const std::vector<ubii::Node *> nodes{worker->node.get()};
+
+    SessionSpec spec("bad-cases");
+    auto &doubler = spec.module("libubii_doubler");
+    map_input(doubler, "x", "/bad/in");
+    map_output(doubler, "y", "/bad/out");
+    spec.add_module("libubii_broken");
+    // A module the spec assigns to this node by id although the node does not offer it.
+    spec.session.add_processing_modules()->set_name("no_such_module");
+    spec.session.mutable_processing_modules(2)->set_node_id(worker->node->client_id());
+    const ubii::Session session = start(nodes, spec.session);
+    ASSERT_TRUE(poll_all(
+        nodes, [&] { return worker->count(SessionEvent::Kind::failed) >= 2; }, 10s));
+    poll_all(
+        nodes, [] { return false; }, 500ms);
+    EXPECT_EQ(broken_created.load(), 1);
+    ASSERT_EQ(worker->node->session_modules().size(), 1u) << "the rest of the session runs";
+    EXPECT_EQ(worker->node->session_modules()[0].name, "libubii_doubler");
+    EXPECT_EQ(worker->count(SessionEvent::Kind::confirmed_started), 1);
+    EXPECT_NE(status_of(nodes, session.id()), ubii::sessions::RUNNING)
+        << "the modules that failed were not claimed as started";
+
+    // Started again: the master republishes the start record; nothing runs twice.
+    const auto errors_before = worker->errors.size();
+    ubii::Session again;
+    again.set_id(session.id());
+    start(nodes, again);
+    poll_all(
+        nodes, [] { return false; }, 1s);
+    EXPECT_EQ(worker->node->session_modules().size(), 1u);
+    EXPECT_EQ(broken_created.load(), 1) << "a failed module is tried once per start record only";
+
+    auto unknown = client->sessions().stop("no-such-session");
+    ASSERT_TRUE(poll_all(
+        nodes, [&] { return unknown.done(); }, 5s));
+    EXPECT_FALSE(unknown.result().ok());
+    EXPECT_EQ(worker->node->session_modules().size(), 1u);
+    client->sessions().stop(session.id());
+    poll_all(
+        nodes, [&] { return worker->node->session_modules().empty(); }, 10s);
+    EXPECT_TRUE(worker->node->session_modules().empty());
+    EXPECT_GE(worker->errors.size(), errors_before);
+}
+
+} // namespace
