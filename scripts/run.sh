@@ -7,6 +7,9 @@
 #   services     the master's services, topics and clients
 #   pubsub_cpp, services_cpp   the same two in C++ (the C++ layer, cpp/)
 #   processing_module_cpp      a processing module wired to topics, with its timing metric
+#   session_cpp  a session: the master assigns a module to a node (only with the current master,
+#                which is not on npm: UBII_CURRENT_MASTER_SOURCE=DIR, a checkout of ubii-node-master;
+#                scripts/current-master.sh prepares it)
 #
 #   scripts/run.sh             build tree in ./build/run
 #   UBII_BUILD_DIR=DIR ...     build tree below DIR instead
@@ -22,8 +25,13 @@ cmake --build "$build" -j "$(nproc 2>/dev/null || echo 2)" >/dev/null
 
 exec "$root/scripts/private-net.sh" bash -c '
   set -euo pipefail
-  state=$(mktemp -d)
-  trap "\"$1/scripts/master.sh\" stop \"\$state\" >/dev/null; rm -rf \"\$state\"" EXIT
+  root=$1 source=$3 state=$(mktemp -d) current=""
+  cleanup() {
+    "$root/scripts/master.sh" stop "$state" >/dev/null
+    [ -z "$current" ] || UBII_MASTER_SOURCE="$source" "$root/scripts/master.sh" stop "$current" >/dev/null
+    rm -rf "$state" $current
+  }
+  trap cleanup EXIT
   "$1/scripts/master.sh" start "$state"
   for step in "hello tcp://127.0.0.1:8101" \
               "pubsub tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 2" \
@@ -36,4 +44,13 @@ exec "$root/scripts/private-net.sh" bash -c '
     echo "=== $step"
     "$2"/examples/$step
   done
-' run "$root" "$build"
+  if [ -n "$3" ]; then
+    "$1/scripts/current-master.sh" "$3"
+    current=$(mktemp -d)
+    UBII_MASTER_SOURCE="$3" "$1/scripts/master.sh" start "$current" 8401
+    echo "=== session_cpp tcp://127.0.0.1:8401 tcp://127.0.0.1:8403"
+    "$2"/examples/session_cpp tcp://127.0.0.1:8401 tcp://127.0.0.1:8403
+  else
+    echo "=== session_cpp: skipped (sessions need the current master: UBII_CURRENT_MASTER_SOURCE=DIR)"
+  fi
+' run "$root" "$build" "${UBII_CURRENT_MASTER_SOURCE:-}"

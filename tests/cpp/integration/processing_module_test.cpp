@@ -266,4 +266,28 @@ TEST(ProcessingModuleOnMaster, AnExternalLoopWaitsOnTheNodesFdsUntilTheNextPassI
     EXPECT_LE(passes, 23);
 }
 
+// The npm 0.4.0 master never assigns modules to nodes (PROTOCOL.md Appendix A), but a node that
+// serves sessions must still work with it: its registration, with the modules offered, is
+// accepted, and its start/stop subscriptions and master check raise nothing.
+TEST(ServingSessions, TheNpmMasterTakesTheOfferedModulesAndAssignsNone)
+{
+    ubii::NodeOptions options = ubii_cpp_test::options_for("serving-on-npm");
+    options.is_dedicated_processing_node = true;
+    ubii::Node node(options);
+    std::vector<std::string> errors;
+    node.on_error([&](ubii::Status, std::string_view detail) { errors.emplace_back(detail); });
+    ubii::ModuleRegistry modules;
+    modules.add([] {
+        return ubii::make_module({"noop", "does nothing", {ubii::input<double>("x")}, {}},
+                                 [](ubii::Pass &) {});
+    });
+    node.serve_sessions(std::move(modules));
+    node.connect(10s);
+    node.run_for(500ms);
+    EXPECT_TRUE(node.usable(ubii::Behaviour::processing_modules));
+    EXPECT_TRUE(node.session_modules().empty());
+    EXPECT_TRUE(errors.empty()) << errors.front();
+    EXPECT_TRUE(node.stop_wait());
+}
+
 } // namespace
