@@ -76,10 +76,8 @@ void SessionHost::serve(ModuleRegistry modules)
         throw_status(to_status(offered), "cannot offer the processing modules");
     // Exact subscriptions: the master delivers its last start and stop records at once; both are
     // handled as any other (a start record for modules already running changes nothing).
-    start_subscription_ = core_.subscribe(session_start_topic, false,
-                                          [this](const Record &record) { on_start(record); });
-    stop_subscription_ = core_.subscribe(session_stop_topic, false,
-                                         [this](const Record &record) { on_stop(record); });
+    core_.subscribe(session_start_topic, false, [this](const Record &record) { on_start(record); });
+    core_.subscribe(session_stop_topic, false, [this](const Record &record) { on_stop(record); });
     core_.protocol().on_enter(ConnectionState::ready,
                               [this](ConnectionTransition &) { on_ready(); });
     serving_ = true;
@@ -114,12 +112,17 @@ void SessionHost::on_ready()
     ServiceRequest request;
     request.set_topic(service_topics::server_configuration);
     std::weak_ptr<char> alive = alive_;
-    core_.queue_call(request, std::chrono::milliseconds(0),
-                     [this, alive](Result<ServiceReply> reply) {
-                         if (alive.expired() || !reply.ok() || !reply.value().has_server())
-                             return;
-                         check_master(reply.value().server().id());
-                     });
+    try {
+        core_.queue_call(request, std::chrono::milliseconds(0),
+                         [this, alive](Result<ServiceReply> reply) {
+                             if (alive.expired() || !reply.ok() || !reply.value().has_server())
+                                 return;
+                             check_master(reply.value().server().id());
+                         });
+    } catch (const Error &error) { // e.g. a full queue: the next connection checks again
+        core_.report(error.status(),
+                     std::string("cannot ask for the master's id: ") + error.what());
+    }
 }
 
 void SessionHost::check_master(const std::string &master_id)
@@ -131,6 +134,8 @@ void SessionHost::check_master(const std::string &master_id)
         for (const std::string &id : ids)
             stop_hosted(id, "the master restarted (its id changed): its sessions ended with it");
     }
+    if (master_id_ && *master_id_ != master_id)
+        failed_.clear();
     master_id_ = master_id;
 }
 

@@ -79,8 +79,6 @@ class SessionHost
     std::vector<std::string> encoded_specs_;
     std::vector<ubii_encoded_message> offered_;
     bool serving_ = false;
-    std::uint64_t start_subscription_ = 0;
-    std::uint64_t stop_subscription_ = 0;
     std::map<std::string, Hosted> hosted_; // by the module's (master-assigned) id
     // Modules that could not run, by id, with their session's id: a repeated start record does
     // not try (and report) them again; their session's stop forgets them.

@@ -223,8 +223,7 @@ TEST(NodeBehaviours, WhenUsableRunsOnceTheNodeIsReady)
     ubii::Node node(options_for("cpp-behaviours"));
     EXPECT_TRUE(node.implements(ubii::Behaviour::publishing));
     EXPECT_TRUE(node.implements(ubii::Behaviour::services));
-    EXPECT_FALSE(node.implements(ubii::Behaviour::processing_modules));
-    EXPECT_THROW(node.when_usable(ubii::Behaviour::processing_modules, [] {}), ubii::Unsupported);
+    EXPECT_TRUE(node.implements(ubii::Behaviour::processing_modules));
     EXPECT_FALSE(node.usable(ubii::Behaviour::publishing));
 
     int runs = 0;
@@ -238,6 +237,8 @@ TEST(NodeBehaviours, WhenUsableRunsOnceTheNodeIsReady)
     node.run_for(100ms);
     EXPECT_EQ(runs, 1);
     EXPECT_TRUE(was_ready);
+    EXPECT_FALSE(node.usable(ubii::Behaviour::processing_modules))
+        << "ready, but it serves no sessions (Node::serve_sessions)";
     // Usable now: the action runs at the next poll, once.
     node.when_usable(ubii::Behaviour::services, [&] { ++runs; });
     node.poll();

@@ -9,6 +9,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <map>
 
 #include "child_process.h"
@@ -484,6 +485,66 @@ TEST_F(SessionTest, BadModulesRepeatedStartsAndUnknownStopsAreHandled)
         nodes, [&] { return worker->node->session_modules().empty(); }, 10s);
     EXPECT_TRUE(worker->node->session_modules().empty());
     EXPECT_GE(worker->errors.size(), errors_before);
+}
+
+// The master dies mid-session and a new one starts on the same ports: the session died with it,
+// the node reconnects (to a master with another id) and stops the session's module on its own.
+TEST(SessionMasterRestart, ModulesOfADeadMastersSessionsAreStopped)
+{
+    const int port_base = 8501;
+    const auto master = [port_base](const std::string &action) {
+        const std::string command =
+            std::string("UBII_MASTER_SOURCE='") + UBII_CURRENT_MASTER_SOURCE + "' " +
+            UBII_MASTER_SCRIPT + " " + action + " " + UBII_RESTART_MASTER_STATE +
+            (action == "start" ? " " + std::to_string(port_base) : "") + " >/dev/null";
+        return std::system(command.c_str()) == 0;
+    };
+    ASSERT_TRUE(master("start")) << "could not start the test's own master";
+    {
+        ubii::NodeOptions options;
+        options.service_url = "tcp://127.0.0.1:" + std::to_string(port_base);
+        options.topic_url = "tcp://127.0.0.1:" + std::to_string(port_base + 2);
+        options.service_timeout = 1000ms;
+        options.reconnect.first_delay = 100ms;
+        options.reconnect.max_delay = 500ms;
+        options.is_dedicated_processing_node = true;
+        options.name = "libubii-restart";
+        ubii::Node worker(options);
+        std::vector<SessionEvent> events;
+        worker.on_session_event([&](const SessionEvent &event) { events.push_back(event); });
+        ubii::ModuleRegistry modules;
+        modules.add<Doubler>();
+        worker.serve_sessions(std::move(modules));
+        worker.connect(10s);
+        options.name = "restart-client";
+        options.is_dedicated_processing_node = false;
+        ubii::Node client(options);
+        client.connect(10s);
+
+        SessionSpec spec("restart");
+        auto &doubler = spec.module("libubii_doubler");
+        map_input(doubler, "x", "/restart/in");
+        map_output(doubler, "y", "/restart/out");
+        auto started = client.sessions().start(spec.session);
+        const auto poll_both = [&](const std::function<bool()> &done, std::chrono::seconds limit) {
+            const auto until = std::chrono::steady_clock::now() + limit;
+            while (!done() && std::chrono::steady_clock::now() < until) {
+                worker.poll(5ms);
+                client.poll(5ms);
+            }
+            return done();
+        };
+        ASSERT_TRUE(poll_both([&] { return worker.session_modules().size() == 1; }, 10s));
+
+        ASSERT_TRUE(master("stop"));
+        ASSERT_TRUE(master("start"));
+        ASSERT_TRUE(poll_both([&] { return worker.session_modules().empty(); }, 20s))
+            << "the module of the dead master's session still runs";
+        EXPECT_EQ(events.back().kind, SessionEvent::Kind::stopped);
+        EXPECT_NE(events.back().detail.find("master restarted"), std::string::npos);
+        EXPECT_TRUE(worker.ready());
+    }
+    master("stop");
 }
 
 } // namespace
