@@ -435,18 +435,14 @@ std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const
     if (!module)
         throw InvalidArgument("Node::run without a module");
     const ModuleDescription &description = module->description();
-    const auto declared = [](const std::vector<ModuleIO> &ios, const std::string &name) {
-        return std::any_of(ios.begin(), ios.end(),
-                           [&name](const ModuleIO &io) { return io.name == name; });
-    };
     ModuleWiring wired;
     for (const Wiring::Input &input : wiring.inputs()) {
-        if (!declared(description.inputs, input.input))
+        if (find_io(description.inputs, input.input) == nullptr)
             throw NotFound("processing module \"" + description.name + "\" has no input \"" +
                            input.input + "\" to wire to " + input.topic);
     }
     for (const Wiring::Output &output : wiring.outputs()) {
-        if (!declared(description.outputs, output.output))
+        if (find_io(description.outputs, output.output) == nullptr)
             throw NotFound("processing module \"" + description.name + "\" has no output \"" +
                            output.output + "\" to wire to " + output.topic);
         wired.outputs[output.output] = output;
@@ -466,10 +462,7 @@ std::string NodeCore::run_module(std::unique_ptr<ProcessingModule> module, const
     }
     // TopicMux.data_type, else the input's own message format: a filter, not an error.
     const auto mux_filter = [&description](const Wiring::Input &input) {
-        const RecordType own =
-            std::find_if(description.inputs.begin(), description.inputs.end(),
-                         [&input](const ModuleIO &io) { return io.name == input.input; })
-                ->type();
+        const RecordType own = find_io(description.inputs, input.input)->type();
         if (input.data_type != RecordType::NONE && own != RecordType::NONE &&
             input.data_type != own)
             throw InvalidArgument("mux input \"" + input.input + "\" takes " +

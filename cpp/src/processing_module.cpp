@@ -116,11 +116,17 @@ const std::vector<MuxedRecord> &Pass::muxed(std::string_view input) const
     return find(input).muxed;
 }
 
-const ModuleIO &Pass::checked_output(std::string_view output, const Value &value) const
+const ModuleIO *find_io(const std::vector<ModuleIO> &ios, std::string_view name) noexcept
 {
-    const auto declared = std::find_if(declared_outputs_->begin(), declared_outputs_->end(),
-                                       [output](const ModuleIO &io) { return io.name == output; });
-    if (declared == declared_outputs_->end())
+    const auto found = std::find_if(ios.begin(), ios.end(),
+                                    [name](const ModuleIO &io) { return io.name == name; });
+    return found != ios.end() ? &*found : nullptr;
+}
+
+void Pass::check_output(std::string_view output, const Value &value) const
+{
+    const ModuleIO *declared = find_io(*declared_outputs_, output);
+    if (declared == nullptr)
         throw NotFound("the module has no output \"" + std::string(output) + "\"");
     if (value.empty())
         throw WrongType("output \"" + std::string(output) + "\" cannot take an empty value");
@@ -129,12 +135,11 @@ const ModuleIO &Pass::checked_output(std::string_view output, const Value &value
         throw WrongType("output \"" + std::string(output) + "\" takes " +
                         std::string(message_format(wanted)) + ", not " +
                         std::string(message_format(value.type())));
-    return *declared;
 }
 
 void Pass::set_output(std::string_view output, Value value)
 {
-    checked_output(output, value);
+    check_output(output, value);
     for (auto &set : outputs_) {
         if (set.name == output) {
             if (set.demuxed)
@@ -150,7 +155,7 @@ void Pass::set_output(std::string_view output, Value value)
 void Pass::add_demuxed_output(std::string_view output, Value value,
                               std::vector<std::string> topic_params)
 {
-    checked_output(output, value);
+    check_output(output, value);
     for (const auto &set : outputs_) {
         if (set.name == output && !set.demuxed)
             throw StateError("output \"" + std::string(output) + "\" was set as a single value");

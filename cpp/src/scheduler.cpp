@@ -200,8 +200,7 @@ LockstepProcessingReply Scheduler::step(const LockstepProcessingRequest &request
         const auto &inputs = impl_->find(id).module().description().inputs;
         std::vector<Record> mine;
         for (const Record &record : records) {
-            if (std::any_of(inputs.begin(), inputs.end(),
-                            [&record](const ModuleIO &io) { return io.name == record.topic(); }))
+            if (find_io(inputs, record.topic()) != nullptr)
                 mine.push_back(record);
         }
         for (const Record &output : step(id, mine, delta))

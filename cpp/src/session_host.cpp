@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include "node_core.hpp"
@@ -37,21 +38,19 @@ constexpr const char session_stop_topic[] = "/info/session/stop";
 constexpr const char runtime_add[] = "/services/processing_module/runtime/add";
 constexpr const char runtime_remove[] = "/services/processing_module/runtime/remove";
 
-bool declares(const std::vector<ModuleIO> &ios, const std::string &name)
-{
-    return std::any_of(ios.begin(), ios.end(),
-                       [&name](const ModuleIO &io) { return io.name == name; });
-}
-
 // TopicMux/TopicDemux.data_type: the official nodes compare it with the record's member name
-// ("vector3"); a message format ("ubii.dataStructure.Vector3") is taken too.
-RecordType record_type_named(const std::string &data_type)
+// ("vector3"); a message format ("ubii.dataStructure.Vector3") is taken too. NONE when empty (no
+// filter), nothing when it names no member.
+std::optional<RecordType> member_named(const std::string &data_type)
 {
+    if (data_type.empty())
+        return RecordType::NONE;
     for (RecordType type : record_types) {
         if (type != RecordType::NONE && record_type_name(type) == data_type)
             return type;
     }
-    return record_type_for_format(data_type);
+    const RecordType type = record_type_for_format(data_type);
+    return type != RecordType::NONE ? std::optional<RecordType>(type) : std::nullopt;
 }
 } // namespace
 
@@ -216,28 +215,30 @@ Wiring SessionHost::wiring_for(const Session &session, const ProcessingModule &m
         fail(Status::not_found, module.session_id(), module.id(), module.name(),
              what + ": its mapping is left out");
     };
+    const auto no_member = [](const char *io, const std::string &name, const std::string &type) {
+        return std::string(io) + " \"" + name + "\": no record member is named \"" + type + "\"";
+    };
     for (const IOMapping &mapping : session.io_mappings()) {
         if (mapping.processing_module_id() != module.id())
             continue;
         for (const TopicInputMapping &input : mapping.input_mappings()) {
             const std::string &name = input.input_name();
-            if (!declares(description.inputs, name)) {
+            if (find_io(description.inputs, name) == nullptr) {
                 left_out("the module has no input \"" + name + "\"");
                 continue;
             }
             if (input.has_topic_mux()) {
                 const TopicMux &mux = input.topic_mux();
-                const RecordType type = record_type_named(mux.data_type());
-                if (!mux.data_type().empty() && type == RecordType::NONE) {
-                    left_out("input \"" + name + "\": no record member is named \"" +
-                             mux.data_type() + "\"");
+                const std::optional<RecordType> type = member_named(mux.data_type());
+                if (!type) {
+                    left_out(no_member("input", name, mux.data_type()));
                     continue;
                 }
                 if (mux.topic_selector().empty()) {
                     left_out("input \"" + name + "\": the mux has no topic selector");
                     continue;
                 }
-                wiring.mux_input(name, mux.topic_selector(), mux.identity_match_pattern(), type);
+                wiring.mux_input(name, mux.topic_selector(), mux.identity_match_pattern(), *type);
             } else if (!input.topic().empty()) {
                 wiring.input(name, input.topic());
             } else {
@@ -246,19 +247,18 @@ Wiring SessionHost::wiring_for(const Session &session, const ProcessingModule &m
         }
         for (const TopicOutputMapping &output : mapping.output_mappings()) {
             const std::string &name = output.output_name();
-            if (!declares(description.outputs, name)) {
+            if (find_io(description.outputs, name) == nullptr) {
                 left_out("the module has no output \"" + name + "\"");
                 continue;
             }
             if (output.has_topic_demux()) {
                 const TopicDemux &demux = output.topic_demux();
-                const RecordType type = record_type_named(demux.data_type());
-                if (!demux.data_type().empty() && type == RecordType::NONE) {
-                    left_out("output \"" + name + "\": no record member is named \"" +
-                             demux.data_type() + "\"");
+                const std::optional<RecordType> type = member_named(demux.data_type());
+                if (!type) {
+                    left_out(no_member("output", name, demux.data_type()));
                     continue;
                 }
-                wiring.demux_output(name, demux.output_topic_format(), type);
+                wiring.demux_output(name, demux.output_topic_format(), *type);
             } else if (!output.topic().empty()) {
                 wiring.output(name, output.topic());
             } else {

@@ -62,6 +62,9 @@ struct ModuleIO {
         return record_type_for_format(message_format);
     }
 };
+// The input or output named `name` among `ios`; nullptr if there is none.
+const ModuleIO *find_io(const std::vector<ModuleIO> &ios, std::string_view name) noexcept;
+
 template <class T> ModuleIO input(std::string name)
 {
     static_assert(is_record_value_v<T>, "no TopicDataRecord member holds this type");
@@ -202,7 +205,7 @@ class Pass
 
   private:
     const Input &find(std::string_view input) const;
-    const ModuleIO &checked_output(std::string_view output, const Value &value) const;
+    void check_output(std::string_view output, const Value &value) const;
     [[noreturn]] static void throw_no_record(std::string_view input);
 
     std::vector<Input> inputs_;

@@ -12,18 +12,29 @@
 #include <functional>
 #include <map>
 
+#include "../session_test_modules.hpp"
 #include "child_process.h"
 #include "cpp_test_support.hpp"
 #include "test_node.h"
 
 using namespace std::chrono_literals;
-using ubii::Pass;
 using ubii::SessionEvent;
+using namespace ubii_session_test;
 
 namespace
 {
 
 std::atomic<int> broken_created{0};
+
+std::unique_ptr<ubii::ProcessingModule> make_doubler()
+{
+    return std::make_unique<Affine>("libubii_doubler", 2, 0);
+}
+
+std::unique_ptr<ubii::ProcessingModule> make_offset()
+{
+    return std::make_unique<Affine>("libubii_offset", 1, 1000);
+}
 
 // A working directory of the Node.js peer's own (its module database lives there).
 std::string peer_dir(const std::string &name)
@@ -33,78 +44,6 @@ std::string peer_dir(const std::string &name)
     std::filesystem::create_directories(dir);
     return dir;
 }
-
-class Doubler : public ubii::ProcessingModule
-{
-  public:
-    Doubler()
-        : ProcessingModule({"libubii_doubler",
-                            "y = 2x",
-                            {ubii::input<double>("x")},
-                            {ubii::output<double>("y")},
-                            ubii::TriggerOnInput{}})
-    {
-    }
-    void on_processing(Pass &pass) override
-    {
-        pass.set_output("y", 2 * pass.input<double>("x"));
-    }
-};
-
-class Offset : public ubii::ProcessingModule
-{
-  public:
-    Offset()
-        : ProcessingModule({"libubii_offset",
-                            "y = x + 1000",
-                            {ubii::input<double>("x")},
-                            {ubii::output<double>("y")},
-                            ubii::TriggerOnInput{}})
-    {
-    }
-    void on_processing(Pass &pass) override
-    {
-        pass.set_output("y", pass.input<double>("x") + 1000);
-    }
-};
-
-class Broken : public ubii::ProcessingModule
-{
-  public:
-    Broken() : ProcessingModule({"libubii_broken", "", {}, {ubii::output<double>("y")}})
-    {
-    }
-    void on_created() override
-    {
-        ++broken_created;
-        throw std::runtime_error("no camera attached");
-    }
-    void on_processing(Pass &) override
-    {
-    }
-};
-
-class Gather : public ubii::ProcessingModule
-{
-  public:
-    Gather()
-        : ProcessingModule({"libubii_gather",
-                            "",
-                            {ubii::input<double>("values")},
-                            {ubii::output<double>("sum"), ubii::output<double>("each")},
-                            ubii::TriggerOnInput{}})
-    {
-    }
-    void on_processing(Pass &pass) override
-    {
-        double sum = 0;
-        for (const ubii::MuxedRecord &muxed : pass.muxed("values")) {
-            sum += muxed.record->as<double>();
-            pass.add_demuxed_output("each", muxed.record->as<double>(), {muxed.identity});
-        }
-        pass.set_output("sum", sum);
-    }
-};
 
 // A session spec as a client writes it: modules by name, mappings by module name (the master
 // fills in the ids, SESSIONS.md 1.1).
@@ -129,20 +68,6 @@ struct SessionSpec {
         session.add_processing_modules()->set_name(name);
     }
 };
-
-void map_input(ubii::IOMapping &mapping, const std::string &input, const std::string &topic)
-{
-    auto &entry = *mapping.add_input_mappings();
-    entry.set_input_name(input);
-    entry.set_topic(topic);
-}
-
-void map_output(ubii::IOMapping &mapping, const std::string &output, const std::string &topic)
-{
-    auto &entry = *mapping.add_output_mappings();
-    entry.set_output_name(output);
-    entry.set_topic(topic);
-}
 
 class SessionTest : public ::testing::Test
 {
@@ -232,7 +157,7 @@ class SessionTest : public ::testing::Test
 TEST_F(SessionTest, ALibubiiModuleServesTheNodejsNodeAndStopsCleanly)
 {
     ubii::ModuleRegistry modules;
-    modules.add<Doubler>();
+    modules.add(make_doubler);
     auto worker = serving("libubii-worker", std::move(modules));
     ubii_test::ChildProcess peer({"node", UBII_SESSION_PEER, UBII_NODEJS_CLIENT,
                                   ubii_test::service_url(), ubii_test::topic_zmq_url(),
@@ -294,7 +219,7 @@ TEST_F(SessionTest, ALibubiiModuleServesTheNodejsNodeAndStopsCleanly)
 TEST_F(SessionTest, ANodejsModuleFeedsALibubiiModuleInOneSession)
 {
     ubii::ModuleRegistry modules;
-    modules.add<Doubler>();
+    modules.add(make_doubler);
     auto worker = serving("libubii-chain", std::move(modules));
     ubii_test::ChildProcess peer({"node", UBII_SESSION_PEER, UBII_NODEJS_CLIENT,
                                   ubii_test::service_url(), ubii_test::topic_zmq_url(),
@@ -348,8 +273,8 @@ TEST_F(SessionTest, ANodejsModuleFeedsALibubiiModuleInOneSession)
 TEST_F(SessionTest, TwoDedicatedNodesEachRunTheModuleTheyOffer)
 {
     ubii::ModuleRegistry first_modules, second_modules;
-    first_modules.add<Doubler>();
-    second_modules.add<Offset>();
+    first_modules.add(make_doubler);
+    second_modules.add(make_offset);
     auto first = serving("libubii-first", std::move(first_modules));
     auto second = serving("libubii-second", std::move(second_modules));
     const std::vector<ubii::Node *> nodes{first->node.get(), second->node.get()};
@@ -388,22 +313,15 @@ TEST_F(SessionTest, TwoDedicatedNodesEachRunTheModuleTheyOffer)
 TEST_F(SessionTest, MuxInputsAndDemuxOutputsThroughTheMaster)
 {
     ubii::ModuleRegistry modules;
-    modules.add<Gather>();
+    modules.add([] { return std::make_unique<Gather>("libubii_gather"); });
     auto worker = serving("libubii-mux", std::move(modules));
     const std::vector<ubii::Node *> nodes{worker->node.get()};
 
     SessionSpec spec("mux-demux");
     auto &gather = spec.module("libubii_gather");
-    auto &mux = *gather.add_input_mappings();
-    mux.set_input_name("values");
-    mux.mutable_topic_mux()->set_topic_selector("^/m/sensor/[a-z]+/value$");
-    mux.mutable_topic_mux()->set_data_type("double");
-    mux.mutable_topic_mux()->set_identity_match_pattern("/sensor/([a-z]+)/");
+    map_mux_input(gather, "values", "^/m/sensor/[a-z]+/value$", "double", "/sensor/([a-z]+)/");
     map_output(gather, "sum", "/m/sum");
-    auto &demux = *gather.add_output_mappings();
-    demux.set_output_name("each");
-    demux.mutable_topic_demux()->set_output_topic_format("/m/copy/{{#0}}");
-    demux.mutable_topic_demux()->set_data_type("double");
+    map_demux_output(gather, "each", "/m/copy/{{#0}}", "double");
     const ubii::Session session = start(nodes, spec.session);
     EXPECT_TRUE(reaches(nodes, session.id(), ubii::sessions::RUNNING));
 
@@ -440,8 +358,8 @@ TEST_F(SessionTest, MuxInputsAndDemuxOutputsThroughTheMaster)
 TEST_F(SessionTest, BadModulesRepeatedStartsAndUnknownStopsAreHandled)
 {
     ubii::ModuleRegistry modules;
-    modules.add<Doubler>();
-    modules.add<Broken>();
+    modules.add(make_doubler);
+    modules.add([] { return std::make_unique<Broken>("libubii_broken", &broken_created); });
     auto worker = serving("libubii-bad", std::move(modules));
     const std::vector<ubii::Node *> nodes{worker->node.get()};
 
@@ -513,7 +431,7 @@ TEST(SessionMasterRestart, ModulesOfADeadMastersSessionsAreStopped)
         std::vector<SessionEvent> events;
         worker.on_session_event([&](const SessionEvent &event) { events.push_back(event); });
         ubii::ModuleRegistry modules;
-        modules.add<Doubler>();
+        modules.add(make_doubler);
         worker.serve_sessions(std::move(modules));
         worker.connect(10s);
         options.name = "restart-client";

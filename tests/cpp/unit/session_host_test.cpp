@@ -6,13 +6,14 @@
 #include <algorithm>
 #include <map>
 
+#include "../session_test_modules.hpp"
 #include "fake_port.h"
 #include "ubii/messages/topicData/topicData.pb.h"
 #include "ubii/ubii.hpp"
 
 using namespace std::chrono_literals;
-using ubii::Pass;
 using ubii::SessionEvent;
+using namespace ubii_session_test;
 
 namespace
 {
@@ -21,68 +22,12 @@ const std::string first_client_id = "11111111-2222-4333-8444-555555555555";
 const std::string other_node_id = "99999999-2222-4333-8444-555555555555";
 const std::string session_id = "aaaaaaaa-2222-4333-8444-555555555555";
 
-int created_count = 0;
+std::atomic<int> created_count{0};
 
-// y = 2x on every x.
-class Doubler : public ubii::ProcessingModule
+std::unique_ptr<ubii::ProcessingModule> make_doubler()
 {
-  public:
-    Doubler()
-        : ProcessingModule({"doubler",
-                            "y = 2x",
-                            {ubii::input<double>("x")},
-                            {ubii::output<double>("y")},
-                            ubii::TriggerOnInput{}})
-    {
-    }
-    void on_created() override
-    {
-        ++created_count;
-    }
-    void on_processing(Pass &pass) override
-    {
-        pass.set_output("y", 2 * pass.input<double>("x"));
-    }
-};
-
-class Broken : public ubii::ProcessingModule
-{
-  public:
-    Broken() : ProcessingModule({"broken", "", {}, {ubii::output<double>("y")}, ubii::Free{}})
-    {
-    }
-    void on_created() override
-    {
-        throw std::runtime_error("no camera attached");
-    }
-    void on_processing(Pass &) override
-    {
-    }
-};
-
-// Sums the latest value of every muxed topic, and publishes each one again, demultiplexed by
-// the identity the mux gave it.
-class Gather : public ubii::ProcessingModule
-{
-  public:
-    Gather()
-        : ProcessingModule({"gather",
-                            "",
-                            {ubii::input<double>("values")},
-                            {ubii::output<double>("sum"), ubii::output<double>("each")},
-                            ubii::TriggerOnInput{}})
-    {
-    }
-    void on_processing(Pass &pass) override
-    {
-        double sum = 0;
-        for (const ubii::MuxedRecord &muxed : pass.muxed("values")) {
-            sum += muxed.record->as<double>();
-            pass.add_demuxed_output("each", muxed.record->as<double>(), {muxed.identity});
-        }
-        pass.set_output("sum", sum);
-    }
-};
+    return std::make_unique<Affine>("doubler", 2, 0, &created_count);
+}
 
 ubii::topicData::TopicData session_record(const std::string &topic, const ubii::Session &session)
 {
@@ -114,20 +59,6 @@ ubii::IOMapping &mapping_for(ubii::Session &session, const std::string &module_i
     ubii::IOMapping &mapping = *session.add_io_mappings();
     mapping.set_processing_module_id(module_id);
     return mapping;
-}
-
-void map_input(ubii::IOMapping &mapping, const std::string &input, const std::string &topic)
-{
-    auto &entry = *mapping.add_input_mappings();
-    entry.set_input_name(input);
-    entry.set_topic(topic);
-}
-
-void map_output(ubii::IOMapping &mapping, const std::string &output, const std::string &topic)
-{
-    auto &entry = *mapping.add_output_mappings();
-    entry.set_output_name(output);
-    entry.set_topic(topic);
 }
 
 class SessionHostTest : public ::testing::Test
@@ -164,9 +95,9 @@ class SessionHostTest : public ::testing::Test
         options.service_url = "tcp://fake:8101";
         options.service_timeout = 1000ms;
         options.is_dedicated_processing_node = true;
-        modules.add<Doubler>();
-        modules.add<Broken>();
-        modules.add<Gather>();
+        modules.add(make_doubler);
+        modules.add([] { return std::make_unique<Broken>("broken"); });
+        modules.add([] { return std::make_unique<Gather>("gather"); });
     }
 
     ubii::ServiceRequest last_request() const
@@ -302,7 +233,7 @@ TEST_F(SessionHostTest, ARepeatedStartRecordMakesNoSecondInstance)
     auto node = serving_node();
     start(*node, doubler_session());
     start(*node, doubler_session()); // as the master republishes it, or delivers it retained
-    EXPECT_EQ(created_count, 1);
+    EXPECT_EQ(created_count.load(), 1);
     EXPECT_EQ(node->session_modules().size(), 1u);
     EXPECT_EQ(reports.size(), 1u);
     EXPECT_TRUE(errors.empty()) << "a repeat is expected, not an error: " << errors.front().second;
@@ -405,16 +336,9 @@ TEST_F(SessionHostTest, MuxInputsFilterByDataTypeAndDemuxOutputsFillTheTopicForm
     session.set_id(session_id);
     *session.add_processing_modules() = assigned("pm-g", "gather", client_id);
     auto &mapping = mapping_for(session, "pm-g");
-    auto &mux = *mapping.add_input_mappings();
-    mux.set_input_name("values");
-    mux.mutable_topic_mux()->set_topic_selector("^/sensor/[a-z]+/value$");
-    mux.mutable_topic_mux()->set_data_type("double");
-    mux.mutable_topic_mux()->set_identity_match_pattern("/sensor/([a-z]+)/");
+    map_mux_input(mapping, "values", "^/sensor/[a-z]+/value$", "double", "/sensor/([a-z]+)/");
     map_output(mapping, "sum", "/sum");
-    auto &demux = *mapping.add_output_mappings();
-    demux.set_output_name("each");
-    demux.mutable_topic_demux()->set_output_topic_format("/copy/{{#0}}");
-    demux.mutable_topic_demux()->set_data_type("double");
+    map_demux_output(mapping, "each", "/copy/{{#0}}", "double");
     start(*node, session);
     ASSERT_EQ(node->session_modules().size(), 1u);
     EXPECT_NE(std::find(fake.subscribe_regexes.begin(), fake.subscribe_regexes.end(),
@@ -448,7 +372,7 @@ TEST_F(SessionHostTest, AReconnectionKeepsTheModulesAndARestartedMasterEndsThem)
         node->poll(1ms);
     ASSERT_EQ(node->session_modules().size(), 1u) << "the same master: the session goes on";
     start(*node, doubler_session()); // the retained start record names the old client id
-    EXPECT_EQ(created_count, 1);
+    EXPECT_EQ(created_count.load(), 1);
 
     master_id = "master-2";
     fake.set_state(UBII_CHANNEL_TOPIC, UBII_CHANNEL_LOST);
@@ -470,8 +394,8 @@ TEST_F(SessionHostTest, ServingTwiceIsRefused)
 TEST(ModuleRegistry, RefusesDuplicateNamesAndUnknownOnes)
 {
     ubii::ModuleRegistry registry;
-    registry.add<Doubler>();
-    EXPECT_THROW(registry.add<Doubler>(), ubii::InvalidArgument);
+    registry.add(make_doubler);
+    EXPECT_THROW(registry.add(make_doubler), ubii::InvalidArgument);
     EXPECT_THROW(registry.add([] { return std::unique_ptr<ubii::ProcessingModule>(); }),
                  ubii::InvalidArgument);
     EXPECT_THROW(registry.create("nothing"), ubii::NotFound);
