@@ -9,6 +9,7 @@ packages=(
   libzmq3-dev libwebsockets-dev
   googletest libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev clang-format
+  libcli11-dev nlohmann-json3-dev
   iproute2 util-linux
   gcc-arm-linux-gnueabihf libc6-dev-armhf-cross qemu-user
   libtesseract-dev tesseract-ocr-eng tesseract-ocr libopencv-dev python3-onnx fonts-dejavu-core

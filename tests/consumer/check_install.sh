@@ -55,11 +55,13 @@ if [ "$consumer_cpp" = ON ]; then
   cpp_flags=$(PKG_CONFIG_PATH="$libdir/pkgconfig" pkg-config --cflags --libs ubii-cpp)
   # Sanitized builds put the sanitizer runtimes into ubii-cpp.pc's Libs already.
   c++ -Wall -Werror "$here/consumer_cpp.cpp" $cpp_flags -o "$work/consumer_cpp_pkgconfig"
-  # ubii-cpp.pc names the static libubii, as ubii::ubii_cpp does: no libubii.so is looked for.
-  if ldd "$work/consumer_cpp_pkgconfig" | grep -F libubii.so >/dev/null; then
-    echo "check_install: consumer_cpp_pkgconfig loads libubii.so instead of the static libubii" >&2
-    exit 1
-  fi
+  # ubii-cpp.pc names the shared layer on the shared libubii: one C core in the process.
+  for lib in libubii_cpp.so libubii.so; do
+    ldd "$work/consumer_cpp_pkgconfig" | grep -F "$lib" | grep -F "$prefix/" >/dev/null || {
+      echo "check_install: consumer_cpp_pkgconfig does not load $lib from $prefix" >&2
+      exit 1
+    }
+  done
   "$work/consumer_cpp_pkgconfig"
 fi
 parts="static, shared"

@@ -7,6 +7,8 @@
 #include "ubii/error.hpp"
 #include "ubii/master.hpp"
 #include "ubii/messages.hpp"
+#include "ubii/module_arguments.hpp"
+#include "ubii/module_discovery.hpp"
 #include "ubii/module_registry.hpp"
 #include "ubii/node.hpp"
 #include "ubii/node_options.hpp"
