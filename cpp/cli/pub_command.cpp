@@ -1,0 +1,96 @@
+// `ubii-node pub TOPIC VALUE`: publishes one record, or --count of them at --rate; or an image
+// file as an Image2D.
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <thread>
+
+#include "cli_error.hpp"
+#include "commands.hpp"
+#include "image_file.hpp"
+#include "record_input.hpp"
+
+namespace ubii::cli
+{
+
+namespace
+{
+
+struct PubOptions {
+    std::string topic;
+    std::string value;
+    std::string type = "auto";
+    std::string image_file;
+    double rate_hz = 10;
+    unsigned count = 1;
+};
+
+// The records to publish, made before connecting: a bad value fails without a master.
+ubii::Record make_record(const PubOptions &options)
+{
+    if (!options.image_file.empty())
+        return ubii::Record(options.topic, ubii::Value(read_image_file(options.image_file)));
+    if (options.value.empty() && options.type != "string")
+        throw CliError(exit_usage, "pub needs a VALUE (or --image FILE)");
+    return ubii::record_from_message(parse_record(options.topic, options.type, options.value));
+}
+
+int publish(Context &context, const PubOptions &options)
+{
+    if (!(options.rate_hz > 0) || options.rate_hz > 10000)
+        throw CliError(exit_usage, "--rate must be between 0 and 10000 Hz");
+    const ubii::Record record = make_record(options);
+    ubii::Node node =
+        connect(context.connection.node_options(), context.connection.connect_timeout());
+    const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+        std::chrono::duration<double>(1.0 / options.rate_hz));
+    auto next = std::chrono::steady_clock::now();
+    for (unsigned sent = 0; sent < options.count && !interrupted(); ++sent) {
+        if (sent > 0) {
+            next += period;
+            node.run_until(
+                [&] { return interrupted() || std::chrono::steady_clock::now() >= next; },
+                std::chrono::duration_cast<std::chrono::milliseconds>(period) +
+                    std::chrono::milliseconds(1));
+        }
+        const ubii::Status status = node.try_publish(record);
+        if (status == ubii::Status::too_large)
+            throw CliError(exit_usage, "the record on " + options.topic + " is larger than the " +
+                                           "largest message the node sends");
+        if (status != ubii::Status::ok)
+            throw CliError(status == ubii::Status::not_connected ? exit_no_master : exit_usage,
+                           "cannot publish on " + options.topic + ": " + ubii::describe(status));
+        if (context.verbosity > 0)
+            std::cerr << "ubii-node: published " << sent + 1 << " of " << options.count << '\n';
+    }
+    // A round trip on the service socket after the records: the master has read what came
+    // before it on the topic socket by the time this node deregisters.
+    await(node, node.master().server_configuration(), context.connection.timeout());
+    return exit_ok;
+}
+
+} // namespace
+
+void add_pub_command(CLI::App &app, Context &context)
+{
+    CLI::App *command = app.add_subcommand("pub", "Publish a record on a topic");
+    auto options = std::make_shared<PubOptions>();
+    command->add_option("TOPIC", options->topic, "the topic")->required();
+    command->add_option("VALUE", options->value, "the value, as --type reads it");
+    command
+        ->add_option("--type", options->type,
+                     "the record member: auto (double, bool or string), json (a "
+                     "TopicDataRecord), or a member such as double, string, vector3")
+        ->check(CLI::IsMember(record_type_names()))
+        ->capture_default_str();
+    command->add_option("--image", options->image_file,
+                        "publish this image file as an Image2D (PNG, JPEG, ...)");
+    command->add_option("--count", options->count, "how many records")->capture_default_str();
+    command->add_option("--rate", options->rate_hz, "records per second with --count")
+        ->capture_default_str();
+    command->callback([&context, options] {
+        context.action = [&context, options] { return publish(context, *options); };
+    });
+}
+
+} // namespace ubii::cli
