@@ -233,6 +233,23 @@ ubii_status ubii__subscriptions_enqueue_release(ubii_node *node)
     return UBII_OK;
 }
 
+bool ubii_subscriptions_pending(const ubii_node *node)
+{
+    if (node == NULL) {
+        return false;
+    }
+    if (node->subscriptions_dirty || node->subscription_call_pending) {
+        return true;
+    }
+    for (size_t i = 0; i < UBII_MAX_SUBSCRIPTIONS; ++i) {
+        const ubii__subscription *slot = &node->subscriptions[i];
+        if (slot->kind != UBII__FREE && slot->active && !slot->at_master) {
+            return true;
+        }
+    }
+    return false;
+}
+
 void ubii__subscriptions_sync(ubii_node *node)
 {
     if (!node->subscriptions_dirty || node->subscription_call_pending) {

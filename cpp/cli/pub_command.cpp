@@ -23,6 +23,7 @@ struct PubOptions {
     std::string image_file;
     double rate_hz = 10;
     unsigned count = 1;
+    double linger_s = 0.5;
 };
 
 // The records to publish, made before connecting: a bad value fails without a master.
@@ -39,6 +40,8 @@ int publish(Context &context, const PubOptions &options)
 {
     if (!(options.rate_hz > 0) || options.rate_hz > 10000)
         throw CliError(exit_usage, "--rate must be between 0 and 10000 Hz");
+    if (options.linger_s < 0 || options.linger_s > 60)
+        throw CliError(exit_usage, "--linger must be between 0 and 60 seconds");
     const ubii::Record record = make_record(options);
     ubii::Node node =
         connect(context.connection.node_options(), context.connection.connect_timeout());
@@ -63,8 +66,9 @@ int publish(Context &context, const PubOptions &options)
         if (context.verbosity > 0)
             std::cerr << "ubii-node: published " << sent + 1 << " of " << options.count << '\n';
     }
-    // A round trip on the service socket after the records: the master has read what came
-    // before it on the topic socket by the time this node deregisters.
+    // The master reads records and service requests on different sockets: a record still on
+    // its way when the deregistration arrives would be dropped with the client.
+    node.run_for(std::chrono::milliseconds(static_cast<long long>(options.linger_s * 1000)));
     await(node, node.master().server_configuration(), context.connection.timeout());
     return exit_ok;
 }
@@ -87,6 +91,11 @@ void add_pub_command(CLI::App &app, Context &context)
                         "publish this image file as an Image2D (PNG, JPEG, ...)");
     command->add_option("--count", options->count, "how many records")->capture_default_str();
     command->add_option("--rate", options->rate_hz, "records per second with --count")
+        ->capture_default_str();
+    command
+        ->add_option("--linger", options->linger_s,
+                     "seconds to stay connected after the last record, so that the master "
+                     "takes it in before this client leaves")
         ->capture_default_str();
     command->callback([&context, options] {
         context.action = [&context, options] { return publish(context, *options); };

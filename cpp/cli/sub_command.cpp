@@ -57,11 +57,18 @@ int subscribe(Context &context, const SubOptions &options)
         ++received;
         print(record, options.json);
     };
-    ubii::Subscription subscription = options.regex
-                                          ? node.subscribe_regex(options.pattern, on_record)
-                                          : node.subscribe(options.pattern, on_record);
-    // The subscription went to the master before this call: its reply means the master has it.
-    await(node, node.master().server_configuration(), context.connection.timeout());
+    ubii::Subscription subscription;
+    try {
+        subscription = options.regex ? node.subscribe_regex(options.pattern, on_record)
+                                     : node.subscribe(options.pattern, on_record);
+    } catch (const ubii::Error &error) {
+        throw CliError(exit_usage, "cannot subscribe to " + options.pattern + ": " + error.what());
+    }
+    if (!node.run_until([&] { return !node.subscriptions_pending() || interrupted(); },
+                        context.connection.timeout()) &&
+        !interrupted())
+        throw CliError(exit_timeout,
+                       "the master did not confirm the subscription to " + options.pattern);
     if (context.verbosity > 0)
         std::cerr << "ubii-node: subscribed to " << options.pattern << std::endl;
     while (!interrupted() && (options.count == 0 || received < options.count)) {

@@ -167,6 +167,11 @@ bool Node::stop_wait(std::optional<std::chrono::milliseconds> timeout)
     return core_->stop_wait(timeout.value_or(options().stop_timeout));
 }
 
+bool Node::subscriptions_pending() const noexcept
+{
+    return ubii_subscriptions_pending(core_->c_node());
+}
+
 ConnectionState Node::state() const noexcept
 {
     return core_->state();

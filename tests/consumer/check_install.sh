@@ -3,17 +3,19 @@
 # against it three ways: find_package with the static library, with the shared library, and
 # pkg-config; with cpp, a C++ consumer both with find_package(ubii COMPONENTS cpp) and pkg-config
 # ubii-cpp.
-#   check_install.sh BUILD_DIR WORK [ocr] [cpp]   (ocr: the build has the OCR pipelines, cpp: the
-#                                                 C++ layer; use them too, cpp also via pkg-config)
+#   check_install.sh BUILD_DIR WORK [ocr] [cpp] [testing]   (ocr: the build has the OCR pipelines,
+#     cpp: the C++ layer, also via pkg-config; testing: build examples/testing against the
+#     installation and run it, its master started by the installed scripts)
 set -euo pipefail
 # grep reads its whole input (no -q): an early exit would fail the writer with SIGPIPE under pipefail.
 build=${1:?} work=${2:?}
 shift 2
-ocr= cpp=
+ocr= cpp= testing=
 for part in "$@"; do
   case $part in
     ocr) ocr=ocr ;;
     cpp) cpp=cpp ;;
+    testing) testing=testing ;;
     "") ;; # a part the build does not have
     *) echo "check_install: unknown part $part" >&2; exit 2 ;;
   esac
@@ -64,7 +66,24 @@ if [ "$consumer_cpp" = ON ]; then
   done
   "$work/consumer_cpp_pkgconfig"
 fi
+if [ "$testing" = testing ]; then
+  # examples/testing as a user builds it: find_package(ubii COMPONENTS testing) from the prefix,
+  # its fixture starting the master with the installed scripts.
+  cmake -S "${UBII_CONSUMER_TESTING_SOURCE:?}" -B "$work/testing-build" -DCMAKE_PREFIX_PATH="$prefix" \
+    >"$work/testing-configure.log"
+  cmake --build "$work/testing-build" >"$work/testing-build.log"
+  UBII_TESTING_SCRIPTS= "$work/testing-build/scale_test" >"$work/testing-run.log" 2>&1 || {
+    cat "$work/testing-run.log" >&2
+    exit 1
+  }
+  grep -F "[  PASSED  ] 2 tests" "$work/testing-run.log" >/dev/null || {
+    echo "check_install: the installed fixture's example did not pass both tests:" >&2
+    cat "$work/testing-run.log" >&2
+    exit 1
+  }
+fi
 parts="static, shared"
 [ "$consumer_ocr" = ON ] && parts="$parts, ocr"
 [ "$consumer_cpp" = ON ] && parts="$parts, cpp"
+[ "$testing" = testing ] && parts="$parts, testing"
 echo "check_install: find_package ($parts) and pkg-config consumers work"

@@ -92,6 +92,11 @@ UBII_API ubii_status ubii_subscribe(ubii_node *node, const char *topic, ubii_rec
 UBII_API ubii_status ubii_subscribe_regex(ubii_node *node, const char *regex, ubii_record_fn fn,
                                           void *user, ubii_subscription *handle);
 UBII_API ubii_status ubii_unsubscribe(ubii_node *node, ubii_subscription handle);
+/* Whether subscription changes made so far are still on their way to the master: sent with the
+ * next poll, or sent and not answered yet. Once it is false, every subscription receives what is
+ * published after that (a service call made right after subscribing does not tell: the
+ * subscription request goes out with the next poll, possibly after that call). */
+UBII_API bool ubii_subscriptions_pending(const ubii_node *node);
 
 /* Whether `topic` matches `regex` the way the master decides it (unanchored search). Returns
  * UBII_OK (match), UBII_ERR_NOT_FOUND (no match), UBII_ERR_UNSUPPORTED / UBII_ERR_INVALID_ARGUMENT

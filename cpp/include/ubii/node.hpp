@@ -227,6 +227,9 @@ class Node
     // ubii::Unsupported for a regex outside the supported dialect (ubii/topic.h).
     Subscription subscribe(std::string topic, RecordHandler handler);
     Subscription subscribe_regex(std::string regex, RecordHandler handler);
+    // Whether subscriptions made (or cancelled) so far are still on their way to the master
+    // (ubii_subscriptions_pending): poll until it is false before relying on a new subscription.
+    bool subscriptions_pending() const noexcept;
     // Typed: `handler(const T &value, const ubii::RecordInfo &info)`. T may be any record member
     // type, or ubii::ImageView for images without copying the pixels. A record of another type is
     // not passed on: it is counted (Stats::type_mismatches) and reported as Status::wrong_type.
