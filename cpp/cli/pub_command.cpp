@@ -3,7 +3,6 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
-#include <thread>
 
 #include "cli_error.hpp"
 #include "commands.hpp"
@@ -69,7 +68,6 @@ int publish(Context &context, const PubOptions &options)
     // The master reads records and service requests on different sockets: a record still on
     // its way when the deregistration arrives would be dropped with the client.
     node.run_for(std::chrono::milliseconds(static_cast<long long>(options.linger_s * 1000)));
-    await(node, node.master().server_configuration(), context.connection.timeout());
     return exit_ok;
 }
 
