@@ -56,3 +56,28 @@ TEST_F(ScaleTest, AnotherNodeSeesWhatTheTestPublishes)
     EXPECT_TRUE(run_until([&] { return !seen.empty(); }, 5s));
     EXPECT_EQ(seen, std::vector<std::string>{"hello"});
 }
+
+TEST_F(ScaleTest, RunsInASessionTheMasterAssigns)
+{
+    if (!master().assigns_sessions)
+        GTEST_SKIP() << "the npm master runs session modules itself; UBII_MASTER_SOURCE=DIR runs "
+                        "the current master, which assigns them to nodes";
+    ubii::ModuleRegistry modules;
+    modules.add([] { return std::make_unique<Scale>(5.0); });
+    ubii::Session session;
+    session.set_name("scale-session");
+    session.add_processing_modules()->set_name("scale");
+    ubii::IOMapping *mapping = session.add_io_mappings();
+    mapping->set_processing_module_name("scale");
+    auto *input = mapping->add_input_mappings();
+    input->set_input_name("value");
+    input->set_topic("/scale-session/in");
+    auto *output = mapping->add_output_mappings();
+    output->set_output_name("scaled");
+    output->set_topic("/scale-session/out");
+
+    auto out = probe("/scale-session/out");
+    ASSERT_FALSE(start_session(std::move(modules), session).empty());
+    node().publish("/scale-session/in", 8.4);
+    EXPECT_DOUBLE_EQ(out.next<double>(5s), 42.0);
+}

@@ -60,6 +60,11 @@ void MasterTest::SetUp()
 
 void MasterTest::TearDown()
 {
+    for (const std::string &id : sessions_) {
+        const auto stopped = node_->sessions().stop(id);
+        run_until([&stopped] { return stopped.done(); }, default_timeout);
+    }
+    sessions_.clear();
     other_nodes_.clear();
     node_.reset();
 }
@@ -105,6 +110,49 @@ bool MasterTest::run_until(const std::function<bool()> &done, std::chrono::milli
         poll_all(std::chrono::milliseconds(5));
     }
     return true;
+}
+
+std::string MasterTest::start_session(ubii::ModuleRegistry modules, const ubii::Session &session)
+{
+    struct Progress {
+        int started = 0;
+        std::string failure;
+    };
+    auto progress = std::make_shared<Progress>();
+    ubii::NodeOptions options = node_options("session-node");
+    options.is_dedicated_processing_node = true;
+    ubii::Node &serving = other_nodes_.emplace_back(options);
+    serving.on_session_event([progress](const ubii::SessionEvent &event) {
+        if (event.kind == ubii::SessionEvent::Kind::confirmed_started)
+            ++progress->started;
+        else if (event.kind == ubii::SessionEvent::Kind::failed && progress->failure.empty())
+            progress->failure = event.module_name + ": " + event.detail;
+    });
+    serving.serve_sessions(std::move(modules));
+    serving.connect(default_timeout);
+    const auto call = node_->sessions().start(session);
+    if (!run_until([&call] { return call.done(); }, default_timeout)) {
+        ADD_FAILURE() << "the master did not answer the session start";
+        return "";
+    }
+    ubii::Session started;
+    try {
+        started = call.get();
+    } catch (const ubii::Error &error) {
+        ADD_FAILURE() << "the master refused the session: " << error.what();
+        return "";
+    }
+    sessions_.push_back(started.id());
+    const int expected = started.processing_modules_size();
+    run_until([&] { return progress->started >= expected || !progress->failure.empty(); },
+              default_timeout);
+    if (!progress->failure.empty())
+        ADD_FAILURE() << "a module of the session failed: " << progress->failure;
+    else if (progress->started < expected)
+        ADD_FAILURE() << progress->started << " of " << expected
+                      << " modules of the session started within " << default_timeout.count()
+                      << " ms";
+    return progress->failure.empty() && progress->started >= expected ? started.id() : "";
 }
 
 Probe MasterTest::probe(const std::string &topic)

@@ -32,6 +32,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -121,6 +122,13 @@ class MasterTest : public ::testing::Test
     ubii::RunningModule run_module(std::unique_ptr<ubii::ProcessingModule> module,
                                    const ubii::Wiring &wiring);
 
+    // Starts `session` on the master with `modules` offered by a dedicated processing node of the
+    // test that serves sessions, and returns the session's id once every module the session
+    // names reports started (a refused or failed start fails the test and returns ""). Stopped
+    // when the test ends. Only a master that assigns modules to nodes runs it: the current master
+    // (UBII_MASTER_SOURCE); check master().assigns_sessions and skip without one.
+    std::string start_session(ubii::ModuleRegistry modules, const ubii::Session &session);
+
     // Polls every node of the test for `duration`.
     void run_for(std::chrono::milliseconds duration);
     // Polls every node of the test until `done` holds (true) or `timeout` passes (false).
@@ -135,6 +143,7 @@ class MasterTest : public ::testing::Test
     const MasterEndpoints *endpoints_ = nullptr;
     std::unique_ptr<ubii::Node> node_;
     std::deque<ubii::Node> other_nodes_;
+    std::vector<std::string> sessions_;
 };
 
 } // namespace ubii::testing
