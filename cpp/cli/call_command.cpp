@@ -43,8 +43,7 @@ void add_call_command(CLI::App &app, Context &context)
     command->callback([&context, service, request_json] {
         context.action = [&context, service, request_json] {
             const ubii::ServiceRequest request = make_request(*service, *request_json);
-            ubii::Node node =
-                connect(context.connection.node_options(), context.connection.connect_timeout());
+            ubii::Node node = connect(context.connection);
             const ubii::ServiceReply reply =
                 await(node, node.call(request), context.connection.timeout());
             std::cout << to_json(reply).dump(2) << '\n';

@@ -73,14 +73,19 @@ void add_connection_options(CLI::App &app, ConnectionOptions &options)
         ->capture_default_str();
 }
 
-ubii::Node connect(const ubii::NodeOptions &options, std::chrono::milliseconds timeout)
+void connect(ubii::Node &node, std::chrono::milliseconds timeout)
 {
-    ubii::Node node(options);
     try {
         node.connect(timeout);
     } catch (const ubii::Error &error) {
         throw CliError(exit_no_master, error.what());
     }
+}
+
+ubii::Node connect(const ConnectionOptions &options)
+{
+    ubii::Node node(options.node_options());
+    connect(node, options.connect_timeout());
     return node;
 }
 

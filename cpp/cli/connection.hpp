@@ -29,13 +29,10 @@ struct ConnectionOptions {
 // Adds --service-url, --topic-url, --name, --connect-timeout, --reply-timeout (every command).
 void add_connection_options(CLI::App &app, ConnectionOptions &options);
 
-// A node connected to the master: CliError(exit_no_master) when it is not reachable in time.
-ubii::Node connect(const ubii::NodeOptions &options, std::chrono::milliseconds timeout);
-
-// Waits for a call's reply: CliError with exit_master_error for the master's error reply,
-// exit_timeout for none within --reply-timeout (+1 s for the node's own timer to fire).
-template <class T>
-T await(ubii::Node &node, const ubii::Call<T> &call, std::chrono::milliseconds timeout);
+// Connects `node`: CliError(exit_no_master) when the master is not reachable within `timeout`.
+void connect(ubii::Node &node, std::chrono::milliseconds timeout);
+// A node with these options, connected within --connect-timeout (the same errors).
+ubii::Node connect(const ConnectionOptions &options);
 
 // SIGINT and SIGTERM end a command's loop; SIGUSR1 asks `run` for its timing report.
 void install_signal_handlers();
@@ -45,6 +42,8 @@ bool take_report_request() noexcept;
 
 [[noreturn]] void throw_call_failure(const std::string &service);
 
+// Waits for a call's reply: CliError with exit_master_error for the master's error reply,
+// exit_timeout for none within --reply-timeout (+1 s for the node's own timer to fire).
 template <class T>
 T await(ubii::Node &node, const ubii::Call<T> &call, std::chrono::milliseconds timeout)
 {

@@ -20,8 +20,7 @@ void add_info_command(CLI::App &app, Context &context)
     command->add_flag("--json", *json, "print JSON");
     command->callback([&context, json] {
         context.action = [&context, json] {
-            ubii::Node node =
-                connect(context.connection.node_options(), context.connection.connect_timeout());
+            ubii::Node node = connect(context.connection);
             const ubii::Server server =
                 await(node, node.master().server_configuration(), context.connection.timeout());
             const nlohmann::ordered_json fields = to_json(server);

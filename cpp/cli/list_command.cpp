@@ -63,8 +63,7 @@ void add_list_command(CLI::App &app, Context &context)
     command->add_flag("--json", *json, "print a JSON array");
     command->callback([&context, kind, json] {
         context.action = [&context, kind, json] {
-            ubii::Node node =
-                connect(context.connection.node_options(), context.connection.connect_timeout());
+            ubii::Node node = connect(context.connection);
             const Listing list = fetch(node, *kind, context.connection.timeout());
             const auto *elements = list.reply->GetDescriptor()->FindFieldByName("elements");
             const auto *reflection = list.reply->GetReflection();

@@ -45,6 +45,11 @@ std::size_t LoadedModules::refusals() const
     return count;
 }
 
+std::string LoadedModules::searched_text() const
+{
+    return searched.empty() ? "no directory" : joined(searched);
+}
+
 void add_module_options(CLI::App &command, ModuleOptions &options)
 {
     command

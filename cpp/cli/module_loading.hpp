@@ -26,6 +26,8 @@ struct LoadedModules {
     std::vector<ubii::PluginReport> reports;
     std::vector<std::string> searched;
     std::size_t refusals() const;
+    // The directories looked in, for messages: "a, b", or "no directory".
+    std::string searched_text() const;
 };
 
 // Loads everything and prints each refusal on stderr ("ubii-node: FILE: why"). A --modules DIR

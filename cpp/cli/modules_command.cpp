@@ -42,8 +42,8 @@ int list_modules(const ModuleOptions &options, bool json)
     else if (!rows.empty())
         print_table(rows, {"name", "inputs", "outputs", "processing_mode", "description"});
     if (!json && loaded.registry.empty())
-        std::cerr << "ubii-node: no processing modules (looked in: "
-                  << (loaded.searched.empty() ? "no directory" : joined(loaded.searched)) << ")\n";
+        std::cerr << "ubii-node: no processing modules (looked in: " << loaded.searched_text()
+                  << ")\n";
     return loaded.refusals() > 0 ? exit_modules : exit_ok;
 }
 

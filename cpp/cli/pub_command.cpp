@@ -42,8 +42,7 @@ int publish(Context &context, const PubOptions &options)
     if (options.linger_s < 0 || options.linger_s > 60)
         throw CliError(exit_usage, "--linger must be between 0 and 60 seconds");
     const ubii::Record record = make_record(options);
-    ubii::Node node =
-        connect(context.connection.node_options(), context.connection.connect_timeout());
+    ubii::Node node = connect(context.connection);
     const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
         std::chrono::duration<double>(1.0 / options.rate_hz));
     auto next = std::chrono::steady_clock::now();

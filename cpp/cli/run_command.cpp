@@ -96,10 +96,9 @@ int serve(Context &context, const RunOptions &options)
         throw CliError(exit_usage, "--stats must not be negative");
     LoadedModules loaded = load_modules(options.modules, options.names);
     if (loaded.registry.empty())
-        throw CliError(exit_modules, "no processing modules to offer (looked in: " +
-                                         (loaded.searched.empty() ? std::string("no directory")
-                                                                  : joined(loaded.searched)) +
-                                         "; give --modules DIR or set UBII_MODULE_PATH)");
+        throw CliError(exit_modules,
+                       "no processing modules to offer (looked in: " + loaded.searched_text() +
+                           "; give --modules DIR or set UBII_MODULE_PATH)");
     ubii::NodeOptions node_options = context.connection.node_options();
     node_options.is_dedicated_processing_node = true;
     node_options.reconnect.max_attempts = 0; // a serving node waits for its master to come back
@@ -118,11 +117,7 @@ int serve(Context &context, const RunOptions &options)
         if (verbosity > 0)
             log_line("error: " + std::string(ubii::describe(status)) + ": " + std::string(detail));
     });
-    try {
-        node.connect(context.connection.connect_timeout());
-    } catch (const ubii::Error &error) {
-        throw CliError(exit_no_master, error.what());
-    }
+    connect(node, context.connection.connect_timeout());
     log_line("offering " + joined(names));
     const auto period = std::chrono::milliseconds(static_cast<long long>(options.stats_s * 1000));
     auto next_stats = std::chrono::steady_clock::now() + period;

@@ -57,8 +57,7 @@ void add_session_command(CLI::App &app, Context &context)
     start->callback([&context, spec_file, json] {
         context.action = [&context, spec_file, json] {
             const ubii::Session spec = read_session(*spec_file);
-            ubii::Node node =
-                connect(context.connection.node_options(), context.connection.connect_timeout());
+            ubii::Node node = connect(context.connection);
             print_session(await(node, node.sessions().start(spec), context.connection.timeout()),
                           *json);
             return int(exit_ok);
@@ -70,8 +69,7 @@ void add_session_command(CLI::App &app, Context &context)
     stop->add_option("ID", *id, "the session's id")->required();
     stop->callback([&context, id, json] {
         context.action = [&context, id, json] {
-            ubii::Node node =
-                connect(context.connection.node_options(), context.connection.connect_timeout());
+            ubii::Node node = connect(context.connection);
             print_session(await(node, node.sessions().stop(*id), context.connection.timeout()),
                           *json);
             return int(exit_ok);
@@ -81,8 +79,7 @@ void add_session_command(CLI::App &app, Context &context)
     CLI::App *list = command->add_subcommand("list", "List the sessions the master runs");
     list->callback([&context, json] {
         context.action = [&context, json] {
-            ubii::Node node =
-                connect(context.connection.node_options(), context.connection.connect_timeout());
+            ubii::Node node = connect(context.connection);
             const ubii::SessionList sessions =
                 await(node, node.sessions().list(), context.connection.timeout());
             for (const ubii::Session &session : sessions.elements())

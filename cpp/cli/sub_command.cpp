@@ -48,8 +48,7 @@ int subscribe(Context &context, const SubOptions &options)
             ? std::chrono::steady_clock::now() +
                   std::chrono::milliseconds(static_cast<long long>(options.timeout_s * 1000))
             : std::chrono::steady_clock::time_point::max();
-    ubii::Node node =
-        connect(context.connection.node_options(), context.connection.connect_timeout());
+    ubii::Node node = connect(context.connection);
     unsigned received = 0;
     const auto on_record = [&](const ubii::Record &record) {
         if (options.count > 0 && received >= options.count)

@@ -7,6 +7,7 @@
 #include <exception>
 #include <system_error>
 
+#include "exception_text.hpp"
 #include "ubii/plugin.hpp"
 
 namespace ubii
@@ -23,17 +24,6 @@ std::vector<ModuleFactory> &linked_factories()
     return factories;
 }
 
-std::string what_of(const std::exception_ptr &error)
-{
-    try {
-        std::rethrow_exception(error);
-    } catch (const std::exception &exception) {
-        return exception.what();
-    } catch (...) {
-        return "an exception that is not a std::exception";
-    }
-}
-
 // Adds each factory, refusing the ones that throw or collide; `source` names where they came from.
 void add_each(ModuleRegistry &registry, const std::vector<ModuleFactory> &factories,
               PluginReport &report)
@@ -45,7 +35,7 @@ void add_each(ModuleRegistry &registry, const std::vector<ModuleFactory> &factor
         } catch (...) {
             report.errors.push_back(source + ": module " + std::to_string(index + 1) + " of " +
                                     std::to_string(factories.size()) +
-                                    " refused: " + what_of(std::current_exception()));
+                                    " refused: " + detail::what_of(std::current_exception()));
         }
     }
 }
@@ -107,8 +97,8 @@ PluginReport load_plugin(ModuleRegistry &registry, const std::filesystem::path &
     try {
         factories = manifest->factories();
     } catch (...) {
-        report.errors.push_back(
-            source + ": refused: its factory list threw: " + what_of(std::current_exception()));
+        report.errors.push_back(source + ": refused: its factory list threw: " +
+                                detail::what_of(std::current_exception()));
         dlclose(library);
         return report;
     }

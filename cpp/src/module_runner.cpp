@@ -3,24 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "exception_text.hpp"
+
 namespace ubii::detail
 {
-
-namespace
-{
-
-std::string what_of(const std::exception_ptr &error)
-{
-    try {
-        std::rethrow_exception(error);
-    } catch (const std::exception &exception) {
-        return exception.what();
-    } catch (...) {
-        return "an exception not derived from std::exception";
-    }
-}
-
-} // namespace
 
 struct ModuleRunner::Worker {
     std::mutex mutex;

@@ -173,9 +173,10 @@ class SharedMaster
         state_ = state_template;
         const fs::path log = state_ / "fixture.log";
         const std::string source = environment("UBII_MASTER_SOURCE");
+        const fs::path cache = cache_directory();
         // Installing needs the registry: before the private network, which reaches nothing.
-        if (source.empty() && !fs::exists(cache_directory() / "npm" / "master" / ".ubii-stamp") &&
-            run_logged({scripts_ / "npm-packages.sh", cache_directory()}, log) != 0) {
+        if (source.empty() && !fs::exists(cache / "npm" / "master" / ".ubii-stamp") &&
+            run_logged({scripts_ / "npm-packages.sh", cache}, log) != 0) {
             why_ = "the master could not be installed (scripts/npm-packages.sh needs npm and the "
                    "npm registry):" +
                    tail_of(log);
@@ -186,7 +187,7 @@ class SharedMaster
         endpoints_.private_network = wants_private && detail::enter_private_network(&private_why);
         if (wants_private && !endpoints_.private_network)
             std::ofstream(log, std::ios::app) << "no private network: " << private_why << '\n';
-        setenv("UBII_CACHE_DIR", cache_directory().c_str(), 1);
+        setenv("UBII_CACHE_DIR", cache.c_str(), 1);
         const std::string fixed = environment("UBII_TESTING_PORT_BASE");
         for (int attempt = 0; attempt < 3 && !running_; ++attempt) {
             const int base = !fixed.empty()               ? std::atoi(fixed.c_str())
