@@ -29,7 +29,10 @@ PipelineKind parse_pipeline_kind(std::string_view name)
         return PipelineKind::mser;
     if (lower == "east")
         return PipelineKind::east;
-    throw InvalidArgument("unknown OCR pipeline '" + std::string(name) + "' (pure, mser or east)");
+    if (lower == "db")
+        return PipelineKind::db;
+    throw InvalidArgument("unknown OCR pipeline '" + std::string(name) +
+                          "' (pure, mser, east or db)");
 }
 
 std::string_view to_string(PipelineKind kind)
@@ -41,6 +44,8 @@ std::string_view to_string(PipelineKind kind)
         return "mser";
     case PipelineKind::east:
         return "east";
+    case PipelineKind::db:
+        return "db";
     }
     return "unknown";
 }
@@ -52,6 +57,8 @@ PipelineOptions default_options(PipelineKind kind)
         return MserOptions{};
     case PipelineKind::east:
         return EastOptions{};
+    case PipelineKind::db:
+        return DbOptions{};
     case PipelineKind::pure:
         break;
     }
@@ -62,7 +69,8 @@ PipelineKind kind_of(const PipelineOptions &options)
 {
     return std::visit(Overloaded{[](const PureOptions &) { return PipelineKind::pure; },
                                  [](const MserOptions &) { return PipelineKind::mser; },
-                                 [](const EastOptions &) { return PipelineKind::east; }},
+                                 [](const EastOptions &) { return PipelineKind::east; },
+                                 [](const DbOptions &) { return PipelineKind::db; }},
                       options);
 }
 
@@ -81,6 +89,9 @@ std::unique_ptr<Pipeline> make_pipeline(const PipelineOptions &options)
                                  },
                                  [](const EastOptions &east) -> std::unique_ptr<Pipeline> {
                                      return std::make_unique<EastPipeline>(east);
+                                 },
+                                 [](const DbOptions &db) -> std::unique_ptr<Pipeline> {
+                                     return std::make_unique<DbPipeline>(db);
                                  }},
                       options);
 }

@@ -3,6 +3,7 @@
 
 // Text recognition on Tesseract and OpenCV for Ubi-Interact nodes (ocr/README.md).
 
+#include "ubii/ocr/db_pipeline.hpp"
 #include "ubii/ocr/east_pipeline.hpp"
 #include "ubii/ocr/error.hpp"
 #include "ubii/ocr/image_records.hpp"

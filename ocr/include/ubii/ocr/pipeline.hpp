@@ -17,9 +17,9 @@
 namespace ubii::ocr
 {
 
-enum class PipelineKind { pure, mser, east };
+enum class PipelineKind { pure, mser, east, db };
 
-// "pure", "mser", "east" (any case); anything else throws InvalidArgument.
+// "pure", "mser", "east", "db" (any case); anything else throws InvalidArgument.
 PipelineKind parse_pipeline_kind(std::string_view name);
 std::string_view to_string(PipelineKind kind);
 

@@ -12,6 +12,7 @@
 #include <memory>
 #include <variant>
 
+#include "ubii/ocr/db_pipeline.hpp"
 #include "ubii/ocr/east_pipeline.hpp"
 #include "ubii/ocr/mser_pipeline.hpp"
 #include "ubii/ocr/pipeline.hpp"
@@ -20,7 +21,7 @@
 namespace ubii::ocr
 {
 
-using PipelineOptions = std::variant<PureOptions, MserOptions, EastOptions>;
+using PipelineOptions = std::variant<PureOptions, MserOptions, EastOptions, DbOptions>;
 
 PipelineOptions default_options(PipelineKind kind);
 PipelineKind kind_of(const PipelineOptions &options);
