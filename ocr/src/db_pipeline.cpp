@@ -7,6 +7,7 @@
 
 #include "db_detector.hpp"
 #include "grayscale.hpp"
+#include "option_checks.hpp"
 #include "tesseract_engine.hpp"
 #include "ubii/ocr/error.hpp"
 
@@ -18,22 +19,6 @@ namespace
 // Tesseract's LSTM model reads lines best with an x-height of about 20 px; smaller lines are
 // scaled up to this height (capitals plus padding) before reading.
 constexpr float min_read_height = 48.0f;
-
-void check(const DbOptions &options)
-{
-    if (options.max_side < 32 || options.max_side > 4096)
-        throw InvalidArgument("DB max_side must lie in 32..4096 pixels, not " +
-                              std::to_string(options.max_side));
-    const auto unit = [](float value) { return value >= 0.0f && value <= 1.0f; };
-    if (!unit(options.binary_threshold) || !unit(options.box_threshold))
-        throw InvalidArgument("DB thresholds must lie in 0..1");
-    if (!(options.unclip_ratio > 0.0f && options.unclip_ratio <= 10.0f))
-        throw InvalidArgument("DB unclip_ratio must lie in (0, 10]");
-    if (options.max_candidates < 1)
-        throw InvalidArgument("DB max_candidates must be at least 1");
-    if (!(options.padding >= 0.0f && options.padding <= 2.0f))
-        throw InvalidArgument("DB padding must lie in 0..2 line heights");
-}
 
 float distance(cv::Point2f from, cv::Point2f to)
 {
@@ -112,13 +97,13 @@ struct DbPipeline::Impl {
 
 DbPipeline::DbPipeline(const DbOptions &options)
 {
-    check(options);
+    detail::check(options);
     impl_ = std::make_unique<Impl>(options);
 }
 
 DbPipeline::~DbPipeline() = default;
 
-std::vector<TextBox> DbPipeline::recognise(const cv::Mat &image)
+std::vector<TextBox> DbPipeline::recognise_frame(const cv::Mat &image)
 {
     const cv::Mat gray = detail::to_grayscale(image);
     const cv::Rect frame(0, 0, gray.cols, gray.rows);

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "grayscale.hpp"
+#include "option_checks.hpp"
 #include "tesseract_engine.hpp"
 #include "ubii/ocr/error.hpp"
 
@@ -14,8 +15,6 @@ namespace ubii::ocr
 {
 namespace
 {
-
-constexpr int east_stride = 32; // EAST's input sides must be multiples of its coarsest feature map
 
 cv::dnn::TextDetectionModel_EAST load_detector(const EastOptions &options)
 {
@@ -35,16 +34,6 @@ cv::dnn::TextDetectionModel_EAST load_detector(const EastOptions &options)
         throw ModelError("OpenCV could not load the EAST model '" + options.model_path +
                          "': " + error.msg);
     }
-}
-
-void check(const EastOptions &options)
-{
-    const auto multiple = [](int side) { return side > 0 && side % east_stride == 0; };
-    if (!multiple(options.input_size.width) || !multiple(options.input_size.height))
-        throw InvalidArgument("EAST input size must be positive multiples of 32");
-    if (options.confidence_threshold < 0.0f || options.confidence_threshold > 1.0f ||
-        options.nms_threshold < 0.0f || options.nms_threshold > 1.0f || options.padding_px < 0)
-        throw InvalidArgument("EAST thresholds must lie in 0..1 and the padding must be >= 0");
 }
 
 // The oriented box, grown by the padding and turned upright, as its own small image.
@@ -100,13 +89,13 @@ struct EastPipeline::Impl {
 
 EastPipeline::EastPipeline(const EastOptions &options)
 {
-    check(options);
+    detail::check(options);
     impl_ = std::make_unique<Impl>(options);
 }
 
 EastPipeline::~EastPipeline() = default;
 
-std::vector<TextBox> EastPipeline::recognise(const cv::Mat &image)
+std::vector<TextBox> EastPipeline::recognise_frame(const cv::Mat &image)
 {
     const cv::Mat gray = detail::to_grayscale(image);
     std::vector<cv::RotatedRect> boxes;

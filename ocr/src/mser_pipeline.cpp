@@ -8,6 +8,7 @@
 
 #include "character_regions.hpp"
 #include "grayscale.hpp"
+#include "option_checks.hpp"
 #include "tesseract_engine.hpp"
 #include "ubii/ocr/error.hpp"
 #include "word_grouping.hpp"
@@ -63,12 +64,7 @@ struct MserPipeline::Impl {
 
 MserPipeline::MserPipeline(const MserOptions &options)
 {
-    if (options.delta <= 0 || options.min_area <= 0 || options.max_area < options.min_area ||
-        options.max_variation <= 0.0 || options.padding_px < 0 || options.word_gap < 0.0f ||
-        options.line_gap < 0.0f)
-        throw InvalidArgument(
-            "MSER options out of range: delta, min_area, max_variation must be > 0, "
-            "max_area >= min_area, padding, word_gap and line_gap >= 0");
+    detail::check(options);
     impl_ = std::make_unique<Impl>(options);
 }
 
@@ -133,7 +129,7 @@ std::vector<TextBox> MserPipeline::Impl::read_runs(
     return words;
 }
 
-std::vector<TextBox> MserPipeline::recognise(const cv::Mat &image)
+std::vector<TextBox> MserPipeline::recognise_frame(const cv::Mat &image)
 {
     const cv::Mat gray = detail::to_grayscale(image);
     std::vector<std::vector<cv::Point>> regions;

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <string>
 
+#include "option_checks.hpp"
 #include "ubii/ocr/error.hpp"
 
 namespace ubii::ocr
@@ -77,6 +78,11 @@ PipelineKind kind_of(const PipelineOptions &options)
 TesseractOptions &tesseract_options(PipelineOptions &options)
 {
     return std::visit([](auto &chosen) -> TesseractOptions & { return chosen.tesseract; }, options);
+}
+
+void check_options(const PipelineOptions &options)
+{
+    std::visit([](const auto &chosen) { detail::check(chosen); }, options);
 }
 
 std::unique_ptr<Pipeline> make_pipeline(const PipelineOptions &options)

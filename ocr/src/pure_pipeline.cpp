@@ -18,7 +18,7 @@ PurePipeline::PurePipeline(const PureOptions &options) : impl_(std::make_unique<
 }
 PurePipeline::~PurePipeline() = default;
 
-std::vector<TextBox> PurePipeline::recognise(const cv::Mat &image)
+std::vector<TextBox> PurePipeline::recognise_frame(const cv::Mat &image)
 {
     impl_->engine.set_image(detail::to_grayscale(image));
     return impl_->engine.read_words();

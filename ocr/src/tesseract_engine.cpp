@@ -6,6 +6,7 @@
 #include <tesseract/baseapi.h>
 #include <tesseract/resultiterator.h>
 
+#include "option_checks.hpp"
 #include "ubii/ocr/error.hpp"
 
 namespace ubii::ocr::detail
@@ -38,6 +39,7 @@ std::string trimmed(const char *text)
 TesseractEngine::TesseractEngine(const TesseractOptions &options)
     : api_(std::make_unique<tesseract::TessBaseAPI>()), options_(options)
 {
+    check(options);
     const char *data_path = options.data_path.empty() ? nullptr : options.data_path.c_str();
     if (api_->Init(data_path, options.language.c_str(),
                    static_cast<tesseract::OcrEngineMode>(options.engine_mode)) != 0) {

@@ -53,13 +53,14 @@ class DbPipeline final : public Pipeline
     explicit DbPipeline(const DbOptions &options = {});
     ~DbPipeline() override;
 
-    std::vector<TextBox> recognise(const cv::Mat &image) override;
     PipelineKind kind() const override
     {
         return PipelineKind::db;
     }
 
   private:
+    std::vector<TextBox> recognise_frame(const cv::Mat &image) override;
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

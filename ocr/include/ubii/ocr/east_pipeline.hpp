@@ -43,13 +43,14 @@ class EastPipeline final : public Pipeline
     explicit EastPipeline(const EastOptions &options);
     ~EastPipeline() override;
 
-    std::vector<TextBox> recognise(const cv::Mat &image) override;
     PipelineKind kind() const override
     {
         return PipelineKind::east;
     }
 
   private:
+    std::vector<TextBox> recognise_frame(const cv::Mat &image) override;
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -67,13 +67,14 @@ class MserPipeline final : public Pipeline
     explicit MserPipeline(const MserOptions &options = {});
     ~MserPipeline() override;
 
-    std::vector<TextBox> recognise(const cv::Mat &image) override;
     PipelineKind kind() const override
     {
         return PipelineKind::mser;
     }
 
   private:
+    std::vector<TextBox> recognise_frame(const cv::Mat &image) override;
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -31,12 +31,14 @@ class Pipeline
     Pipeline &operator=(const Pipeline &) = delete;
 
     // `image`: 8-bit grayscale, BGR or BGRA (OpenCV's channel order) and not empty, otherwise
-    // InvalidImage. Blocks until the frame is recognised. Boxes are in `image`'s pixels.
-    virtual std::vector<TextBox> recognise(const cv::Mat &image) = 0;
+    // InvalidImage. Blocks until the frame is recognised. Boxes are in `image`'s pixels. Every
+    // failure is an ocr::Error (what OpenCV throws inside comes out as one, with its message).
+    std::vector<TextBox> recognise(const cv::Mat &image);
     virtual PipelineKind kind() const = 0;
 
   protected:
     Pipeline() = default;
+    virtual std::vector<TextBox> recognise_frame(const cv::Mat &image) = 0;
 };
 
 } // namespace ubii::ocr

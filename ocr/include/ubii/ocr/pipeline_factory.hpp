@@ -28,6 +28,9 @@ PipelineKind kind_of(const PipelineOptions &options);
 // The Tesseract settings every pipeline has.
 TesseractOptions &tesseract_options(PipelineOptions &options);
 
+// InvalidArgument for an option out of range, as the pipeline's constructor would throw it, but
+// without loading Tesseract or a model (a few microseconds).
+void check_options(const PipelineOptions &options);
 // Throws what the chosen pipeline's constructor throws.
 std::unique_ptr<Pipeline> make_pipeline(const PipelineOptions &options);
 

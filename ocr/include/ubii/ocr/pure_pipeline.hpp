@@ -21,13 +21,14 @@ class PurePipeline final : public Pipeline
     explicit PurePipeline(const PureOptions &options = {});
     ~PurePipeline() override;
 
-    std::vector<TextBox> recognise(const cv::Mat &image) override;
     PipelineKind kind() const override
     {
         return PipelineKind::pure;
     }
 
   private:
+    std::vector<TextBox> recognise_frame(const cv::Mat &image) override;
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
