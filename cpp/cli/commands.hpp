@@ -28,6 +28,7 @@ void add_call_command(CLI::App &app, Context &context);
 void add_session_command(CLI::App &app, Context &context);
 void add_modules_command(CLI::App &app, Context &context);
 void add_run_command(CLI::App &app, Context &context);
+void add_ocr_command(CLI::App &app, Context &context);
 
 } // namespace ubii::cli
 

@@ -1,5 +1,8 @@
 #include "image_file.hpp"
 
+#include <filesystem>
+#include <system_error>
+
 #include "cli_error.hpp"
 
 #ifdef UBII_CLI_WITH_OPENCV
@@ -13,6 +16,10 @@ namespace ubii::cli
 #ifdef UBII_CLI_WITH_OPENCV
 ubii::Image2D read_image_file(const std::string &path)
 {
+    // Checked first: OpenCV would print a warning of its own before saying nothing useful.
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error))
+        throw CliError(exit_usage, path + ": no such file");
     cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
     if (image.empty())
         throw CliError(exit_usage, path + " is not an image file OpenCV can read");

@@ -27,6 +27,7 @@ int main(int argc, char **argv)
     add_session_command(app, context);
     add_modules_command(app, context);
     add_run_command(app, context);
+    add_ocr_command(app, context);
 
     try {
         app.parse(argc, argv);

@@ -1,5 +1,6 @@
 #include "module_loading.hpp"
 
+#include <cstdlib>
 #include <iostream>
 #include <map>
 
@@ -68,6 +69,10 @@ void add_module_options(CLI::App &command, ModuleOptions &options)
 LoadedModules load_modules(const ModuleOptions &options, const std::vector<std::string> &names)
 {
     LoadedModules loaded;
+    // Tesseract's OpenMP runtime (the OCR plugin brings it) reads OMP_THREAD_LIMIT once, as it
+    // loads: several threads make it several times slower on small machines (ocr/README.md,
+    // "OpenMP"). Set before any plugin loads; a value the user chose is kept.
+    setenv("OMP_THREAD_LIMIT", "1", 0);
     add_report(loaded, ubii::add_linked_modules(loaded.registry));
     std::vector<std::filesystem::path> dirs;
     for (const std::string &dir : options.dirs) {

@@ -21,10 +21,10 @@ Object2DList to_object2d_list(const std::vector<TextBox> &words)
         Object2D *object = list.add_elements();
         object->set_id(word.text);
         auto *position = object->mutable_pose()->mutable_position();
-        position->set_x(static_cast<float>(word.box.x));
-        position->set_y(static_cast<float>(word.box.y));
-        object->mutable_size()->set_x(static_cast<float>(word.box.width));
-        object->mutable_size()->set_y(static_cast<float>(word.box.height));
+        position->set_x(static_cast<double>(word.box.x));
+        position->set_y(static_cast<double>(word.box.y));
+        object->mutable_size()->set_x(static_cast<double>(word.box.width));
+        object->mutable_size()->set_y(static_cast<double>(word.box.height));
         object->set_user_data_json(detail::user_data_json(word));
     }
     return list;

@@ -20,7 +20,8 @@ cv::dnn::TextDetectionModel_EAST load_detector(const EastOptions &options)
 {
     if (options.model_path.empty())
         throw ModelError(
-            "EAST needs a model file (EastOptions::model_path); libubii ships none and "
+            "EAST needs a model file (EastOptions::model_path, the module argument model); "
+            "libubii ships none and "
             "downloads nothing: use the public frozen_east_text_detection.pb");
     if (!std::ifstream(options.model_path, std::ios::binary).good())
         throw ModelError("EAST model file '" + options.model_path + "' is missing or unreadable");

@@ -1,5 +1,6 @@
 #include "option_checks.hpp"
 
+#include <sstream>
 #include <string>
 
 #include "ubii/ocr/error.hpp"
@@ -25,9 +26,12 @@ void check(const TesseractOptions &options)
 {
     if (options.language.empty())
         throw InvalidArgument("Tesseract language must not be empty (e.g. eng, deu, eng+deu)");
-    if (!(options.min_confidence >= 0.0f && options.min_confidence <= 100.0f))
+    if (!(options.min_confidence >= 0.0f && options.min_confidence <= 100.0f)) {
+        std::ostringstream value;
+        value << options.min_confidence;
         throw InvalidArgument("minimum confidence must lie in 0..100 (Tesseract's scale), not " +
-                              std::to_string(options.min_confidence));
+                              value.str());
+    }
     if (options.source_resolution_dpi < 1 || options.source_resolution_dpi > 2400)
         throw InvalidArgument("source resolution must lie in 1..2400 dpi, not " +
                               std::to_string(options.source_resolution_dpi));
