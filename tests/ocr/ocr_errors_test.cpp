@@ -1,5 +1,6 @@
 // Bad input and bad configuration end in exceptions derived from ubii::ocr::Error, with messages
 // that say what was wrong.
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 
@@ -126,6 +127,71 @@ TEST(EastModel, InputSizeMustBeMultiplesOf32)
                 HasSubstr("multiples of 32"));
 }
 
+TEST(DbModel, MissingFileIsNamedWithHowToFetchIt)
+{
+    DbOptions options;
+    options.model_path = "/nonexistent/db.onnx";
+    const std::string message = message_of<ModelError>([&] { DbPipeline pipeline{options}; });
+    EXPECT_THAT(message, HasSubstr("'/nonexistent/db.onnx' is missing"));
+    EXPECT_THAT(message, HasSubstr("scripts/ocr-models.sh"));
+}
+
+TEST(DbModel, FileThatIsNoNetworkIsRefused)
+{
+    const std::string path = ::testing::TempDir() + "not_a_db_network.onnx";
+    std::ofstream(path) << "this is not a network";
+    DbOptions options;
+    options.model_path = path;
+    EXPECT_THAT(message_of<ModelError>([&] { DbPipeline pipeline{options}; }),
+                HasSubstr("could not load"));
+}
+
+TEST(DbModel, DefaultPathFollowsTheEnvironment)
+{
+    ::setenv("UBII_OCR_DB_MODEL", "/models/chosen.onnx", 1);
+    EXPECT_EQ(default_db_model_path(), "/models/chosen.onnx");
+    ::unsetenv("UBII_OCR_DB_MODEL");
+    ::setenv("UBII_CACHE_DIR", "/cache", 1);
+    EXPECT_EQ(default_db_model_path(), "/cache/models/ppocrv4-det/ppocrv4_det_opencv.onnx");
+    ::unsetenv("UBII_CACHE_DIR");
+}
+
+// Out-of-range options are refused before anything loads, by check_options and by every
+// constructor alike.
+TEST(Options, OutOfRangeValuesAreRefusedWithoutLoading)
+{
+    auto pure = default_options(PipelineKind::pure);
+    tesseract_options(pure).min_confidence = 200.0f;
+    EXPECT_THAT(message_of<InvalidArgument>([&] { check_options(pure); }),
+                HasSubstr("minimum confidence must lie in 0..100 (Tesseract's scale), not 200"));
+    EXPECT_THAT(message_of<InvalidArgument>([&] { make_pipeline(pure); }),
+                HasSubstr("minimum confidence"));
+    auto db = default_options(PipelineKind::db);
+    std::get<DbOptions>(db).max_side = 16;
+    EXPECT_THAT(message_of<InvalidArgument>([&] { check_options(db); }), HasSubstr("32..4096"));
+    auto mser = default_options(PipelineKind::mser);
+    std::get<MserOptions>(mser).delta = 0;
+    EXPECT_THAT(message_of<InvalidArgument>([&] { check_options(mser); }), HasSubstr("MSER"));
+    auto language = default_options(PipelineKind::east);
+    tesseract_options(language).language.clear();
+    EXPECT_THAT(message_of<InvalidArgument>([&] { check_options(language); }),
+                HasSubstr("language"));
+    EXPECT_NO_THROW(check_options(default_options(PipelineKind::db)));
+}
+
+// MSER used to leak OpenCV's own exception on images under 3x3; no glyph fits there.
+TEST(TinyImages, EveryPipelineReadsNothingInAFrameUnderThreeByThree)
+{
+    for (const auto kind : {PipelineKind::pure, PipelineKind::mser}) {
+        const auto pipeline = make_pipeline(default_options(kind));
+        for (const cv::Size size : {cv::Size(1, 1), cv::Size(2, 2), cv::Size(2, 40)})
+            EXPECT_TRUE(pipeline->recognise(cv::Mat(size, CV_8UC3, cv::Scalar(0, 0, 0))).empty())
+                << to_string(kind) << " " << size.width << "x" << size.height;
+        EXPECT_NO_THROW(pipeline->recognise(cv::Mat(3, 3, CV_8UC1, cv::Scalar(0))))
+            << to_string(kind);
+    }
+}
+
 TEST(Tesseract, MissingLanguageIsReportedAsEngineError)
 {
     PureOptions options;
@@ -147,9 +213,11 @@ TEST(PipelineChoice, NamesAreParsedInAnyCaseAndUnknownOnesRefused)
     EXPECT_EQ(parse_pipeline_kind("PURE"), PipelineKind::pure);
     EXPECT_EQ(parse_pipeline_kind("mser"), PipelineKind::mser);
     EXPECT_EQ(parse_pipeline_kind("East"), PipelineKind::east);
+    EXPECT_EQ(parse_pipeline_kind("db"), PipelineKind::db);
     EXPECT_THAT(message_of<InvalidArgument>([] { parse_pipeline_kind("tesseract"); }),
                 HasSubstr("unknown OCR pipeline 'tesseract'"));
-    for (const auto kind : {PipelineKind::pure, PipelineKind::mser, PipelineKind::east})
+    for (const auto kind :
+         {PipelineKind::pure, PipelineKind::mser, PipelineKind::east, PipelineKind::db})
         EXPECT_EQ(parse_pipeline_kind(to_string(kind)), kind);
 }
 

@@ -25,6 +25,8 @@ PipelineOptions options_for(PipelineKind kind, const testdata::Scene &scene)
         east->model_path = UBII_OCR_EAST_TEST_MODEL;
         east->input_size = testdata::east_test_input_size(scene);
     }
+    if (auto *db = std::get_if<DbOptions>(&options))
+        db->model_path = UBII_OCR_DB_MODEL;
     return options;
 }
 
