@@ -1,9 +1,12 @@
 // `ubii-node run [MODULE...]`: a dedicated processing node. Offers the modules found (or those
 // named) to the master and runs what sessions assign to it until SIGINT/SIGTERM, then deregisters.
+// With --wire it also runs modules of its own accord, wired to topics (for masters that assign no
+// sessions, such as the npm master).
 // One line per event on stdout; the timing of each running module on SIGUSR1 or every --stats S.
 #include <ctime>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
 
 #include "cli_error.hpp"
@@ -20,8 +23,48 @@ namespace
 struct RunOptions {
     std::vector<std::string> names;
     ModuleOptions modules;
+    // MODULE:io=TOPIC
+    std::vector<std::string> wires;
     double stats_s = 0;
 };
+
+bool declares(const google::protobuf::RepeatedPtrField<ubii::ModuleIOSpec> &ios,
+              const std::string &name)
+{
+    for (const auto &io : ios)
+        if (io.internal_name() == name)
+            return true;
+    return false;
+}
+
+// --wire MODULE:io=TOPIC, grouped by module; CliError(exit_usage) for a malformed one, an unknown
+// module or a name the module does not declare.
+std::map<std::string, ubii::Wiring> parse_wires(const std::vector<std::string> &wires,
+                                                const ubii::ModuleRegistry &registry)
+{
+    std::map<std::string, ubii::Wiring> wiring;
+    for (const std::string &text : wires) {
+        const std::size_t colon = text.find(':');
+        const std::size_t equals = text.find('=', colon == std::string::npos ? 0 : colon);
+        if (colon == 0 || colon == std::string::npos || equals == std::string::npos ||
+            equals == colon + 1 || equals + 1 == text.size())
+            throw CliError(exit_usage, "--wire " + text + " is not MODULE:io=TOPIC");
+        const std::string module = text.substr(0, colon);
+        const std::string io = text.substr(colon + 1, equals - colon - 1);
+        const std::string topic = text.substr(equals + 1);
+        if (!registry.contains(module))
+            throw CliError(exit_usage, "--wire " + text + ": no module named " + module);
+        const ubii::ProcessingModuleSpec &spec = registry.spec(module);
+        if (declares(spec.inputs(), io))
+            wiring[module].input(io, topic);
+        else if (declares(spec.outputs(), io))
+            wiring[module].output(io, topic);
+        else
+            throw CliError(exit_usage, "--wire " + text + ": " + module +
+                                           " has no input or output named " + io);
+    }
+    return wiring;
+}
 
 std::string clock_time()
 {
@@ -72,14 +115,13 @@ std::string performance_text(const std::optional<double> &performance)
 
 void report_timing(ubii::Node &node)
 {
-    const std::vector<ubii::SessionModule> modules = node.session_modules();
-    if (modules.empty())
+    // Session modules and --wire modules alike: every module the node's scheduler runs.
+    const std::vector<std::string> ids = node.scheduler().ids();
+    if (ids.empty())
         log_line("timing: no module running");
-    for (const ubii::SessionModule &module : modules) {
-        if (!node.scheduler().contains(module.id))
-            continue;
-        const ubii::Timing timing = node.scheduler().timing(module.id);
-        log_line("timing " + module.name + " module=" + module.id +
+    for (const std::string &id : ids) {
+        const ubii::Timing timing = node.scheduler().timing(id);
+        log_line("timing " + node.scheduler().module(id).name() + " module=" + id +
                  ": passes=" + std::to_string(timing.passes) +
                  " interval=" + milliseconds(timing.intervals.mean) + " (perf " +
                  performance_text(timing.interval_performance) + ")" +
@@ -104,6 +146,15 @@ int serve(Context &context, const RunOptions &options)
     node_options.reconnect.max_attempts = 0; // a serving node waits for its master to come back
     ubii::Node node(node_options);
     const std::vector<std::string> names = loaded.registry.names();
+    std::vector<ubii::RunningModule> wired;
+    for (const auto &[module, wiring] : parse_wires(options.wires, loaded.registry)) {
+        try {
+            wired.push_back(node.run(loaded.registry.create(module), wiring));
+        } catch (const std::exception &error) {
+            throw CliError(exit_modules, module + " could not start: " + error.what());
+        }
+        log_line("running " + module + " as " + wired.back().id() + ", wired by --wire");
+    }
     node.serve_sessions(std::move(loaded.registry));
     node.on_session_event([](const ubii::SessionEvent &event) { log_line(event_line(event)); });
     node.on_state([&node](ubii::ConnectionState, ubii::ConnectionState current, ubii::Status) {
@@ -145,6 +196,12 @@ void add_run_command(CLI::App &app, Context &context)
     auto options = std::make_shared<RunOptions>();
     command->add_option("MODULE", options->names, "offer only these modules");
     add_module_options(*command, options->modules);
+    command
+        ->add_option("--wire", options->wires,
+                     "MODULE:io=TOPIC: run MODULE here, its input or output io on TOPIC, without a "
+                     "session (masters that assign none); repeatable, one module instance each")
+        ->allow_extra_args(false)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     command->add_option("--stats", options->stats_s,
                         "print each running module's timing every S seconds (also on SIGUSR1)");
     command->callback([&context, options] {
