@@ -5,6 +5,7 @@
 // keeps polling a node. The child is killed when the object goes.
 
 #include <chrono>
+#include <signal.h>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,13 @@ class ChildProcess
     // -1 if it ended by a signal or did not end in time (it is then killed). Its output stays
     // readable through lines().
     int stop(int signal, std::chrono::milliseconds timeout);
+    // Sends `signal` and lets the child run on.
+    void signal(int number) const
+    {
+        if (pid_ > 0) {
+            ::kill(pid_, number);
+        }
+    }
     // Complete lines read so far (without the newline); reads what is available, never blocks.
     std::vector<std::string> &lines();
 
