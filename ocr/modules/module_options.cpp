@@ -89,7 +89,7 @@ std::string arguments_help(PipelineKind kind)
         break;
     case PipelineKind::db:
         help += ", model (default: scripts/ocr-models.sh's PP-OCRv4 detector in the cache), "
-                "input_size (the longer side in pixels, 960)";
+                "input_size (the longer side in pixels, 640)";
         break;
     case PipelineKind::pure:
     case PipelineKind::mser:
