@@ -51,7 +51,8 @@ struct FrameResult {
 class LocalModule
 {
   public:
-    explicit LocalModule(std::unique_ptr<ubii::ProcessingModule> module)
+    // `verbose`: the lines the module logs (Tesseract's own chatter) go to stderr.
+    LocalModule(std::unique_ptr<ubii::ProcessingModule> module, bool verbose)
     {
         scheduler_.on_output([this](const ubii::ProcessingModule &, const ubii::PassOutput &output) {
             if (const auto *objects = output.value.get_if<ubii::Object2DList>())
@@ -60,6 +61,10 @@ class LocalModule
                 result_.error = *text;
             return ubii::Status::ok;
         });
+        if (verbose)
+            scheduler_.on_log([](const ubii::ProcessingModule &source, std::string_view line) {
+                std::cerr << "ubii-node: " << source.name() << ": " << line << '\n';
+            });
         scheduler_.on_error([this](ubii::Status, std::string_view detail) {
             if (result_.error.empty())
                 result_.error = std::string(detail);
@@ -150,26 +155,27 @@ void print_json(const std::string &file, const std::string &module, const std::v
     std::cout << line.dump() << std::endl;
 }
 
-std::unique_ptr<LocalModule> start_module(OcrOptions &options, const std::string &module)
+std::unique_ptr<LocalModule> start_module(OcrOptions &options, const std::string &module,
+                                          bool verbose)
 {
     for (const std::string &argument : options.arguments)
         options.modules.arguments.push_back(module + ":" + argument);
     LoadedModules loaded = load_modules(options.modules, {module});
     try {
-        return std::make_unique<LocalModule>(loaded.registry.create(module));
+        return std::make_unique<LocalModule>(loaded.registry.create(module), verbose);
     } catch (const std::exception &error) {
         throw CliError(exit_modules, module + " could not start: " + error.what());
     }
 }
 
-int recognise_files(OcrOptions &options)
+int recognise_files(OcrOptions &options, int verbosity)
 {
     const std::string module = modules_by_pipeline().at(options.pipeline);
     // Read every file first: a typo in the last name should not wait for the model to load.
     std::vector<ubii::Image2D> images;
     for (const std::string &file : options.files)
         images.push_back(read_image_file(file));
-    const auto local = start_module(options, module);
+    const auto local = start_module(options, module, verbosity > 0);
     int failed = 0;
     for (std::size_t i = 0; i < images.size(); ++i) {
         const auto started = std::chrono::steady_clock::now();
@@ -218,13 +224,16 @@ void add_ocr_command(CLI::App &app, Context &context)
                      "`ubii-node modules` lists them); repeatable")
         ->allow_extra_args(false)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-    command->add_flag("--json", options->json, "one JSON object per file");
+    command->add_flag("--json", options->json,
+                      "one JSON object per file (-v: Tesseract's own messages on stderr)");
     command->add_option("--timeout", options->timeout_s, "seconds to wait for each file's result")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     add_module_options(*command, options->modules);
     command->callback([&context, options] {
-        context.action = [options] { return recognise_files(*options); };
+        context.action = [&context, options] {
+            return recognise_files(*options, context.verbosity);
+        };
     });
 }
 

@@ -163,6 +163,10 @@ int serve(Context &context, const RunOptions &options)
         else if (current == ubii::ConnectionState::reconnecting)
             log_line("lost the master; reconnecting");
     });
+    // What the modules' libraries say (Tesseract's warnings, through Pass::log).
+    node.scheduler().on_log([](const ubii::ProcessingModule &module, std::string_view line) {
+        log_line(module.id() + ": " + std::string(line));
+    });
     const int verbosity = context.verbosity;
     node.on_error([verbosity](ubii::Status status, std::string_view detail) {
         if (verbosity > 0)

@@ -296,12 +296,28 @@ ModuleRunner::Finished ModuleRunner::execute(Pass &pass) noexcept
         finished.error = std::current_exception();
     }
     finished.execution = context_.clock.now() - began;
+    finished.log = pass.take_log();
     return finished;
+}
+
+void ModuleRunner::hand_on_log(const std::vector<std::string> &lines) noexcept
+{
+    if (!context_.log)
+        return;
+    for (const std::string &line : lines) {
+        try {
+            context_.log(*module_, line);
+        } catch (...) {
+            report(Status::callback_threw,
+                   who() + ": the log handler threw: " + what_of(std::current_exception()));
+        }
+    }
 }
 
 void ModuleRunner::finish(Finished finished)
 {
     executions_.add(finished.execution);
+    hand_on_log(finished.log);
     if (finished.error) {
         ++errors_;
         ++errors_in_a_row_;
@@ -392,6 +408,7 @@ std::vector<PassOutput> ModuleRunner::step(const std::vector<Record> &inputs,
     Pass pass = begin_pass(context_.clock.now(), delta);
     Finished finished = execute(pass);
     executions_.add(finished.execution);
+    hand_on_log(finished.log);
     if (finished.error) {
         ++errors_;
         std::rethrow_exception(finished.error);

@@ -31,6 +31,7 @@ class ModuleRunner
         Clock &clock;
         Scheduler::OutputSink &output;
         Scheduler::ErrorHandler &error;
+        Scheduler::LogHandler &log;
         std::function<void()> &wake;
     };
 
@@ -82,11 +83,13 @@ class ModuleRunner
     };
     struct Finished {
         std::vector<PassOutput> outputs;
+        std::vector<std::string> log;
         std::exception_ptr error;
         Clock::duration execution{};
     };
     struct Worker;
 
+    void hand_on_log(const std::vector<std::string> &lines) noexcept;
     Slot &slot(std::string_view input);
     bool accepts(const Slot &slot, const Record &record);
     bool triggered() const noexcept;

@@ -87,6 +87,11 @@ Pass::Pass(std::vector<Input> inputs, const std::vector<ModuleIO> &outputs,
 {
 }
 
+void Pass::log(std::string line)
+{
+    log_.push_back(std::move(line));
+}
+
 const Pass::Input &Pass::find(std::string_view input) const
 {
     for (const Input &candidate : inputs_) {

@@ -23,6 +23,7 @@ struct Scheduler::Impl {
     Clock &clock;
     OutputSink output;
     ErrorHandler error;
+    LogHandler log;
     std::function<void()> wake;
     // Ordered by id, so that modules due at once run in a stable order.
     std::map<std::string, std::unique_ptr<detail::ModuleRunner>, std::less<>> runners;
@@ -55,6 +56,11 @@ void Scheduler::on_error(ErrorHandler handler)
     impl_->error = std::move(handler);
 }
 
+void Scheduler::on_log(LogHandler handler)
+{
+    impl_->log = std::move(handler);
+}
+
 void Scheduler::set_waker(std::function<void()> wake)
 {
     if (std::any_of(impl_->runners.begin(), impl_->runners.end(),
@@ -77,7 +83,8 @@ std::string Scheduler::add(std::unique_ptr<ProcessingModule> module)
     }
     auto runner = std::make_unique<detail::ModuleRunner>(
         std::move(module), id,
-        detail::ModuleRunner::Context{impl_->clock, impl_->output, impl_->error, impl_->wake});
+        detail::ModuleRunner::Context{impl_->clock, impl_->output, impl_->error, impl_->log,
+                                     impl_->wake});
     runner->create();
     impl_->runners.emplace(id, std::move(runner));
     return id;

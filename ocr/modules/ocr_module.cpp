@@ -5,6 +5,7 @@
 #include "module_options.hpp"
 #include "object_list.hpp"
 #include "ubii/ocr/error.hpp"
+#include "ubii/ocr/tesseract_messages.hpp"
 
 namespace ubii::ocr::modules
 {
@@ -49,6 +50,8 @@ void OcrModule::on_processing(Pass &pass)
         pass.set_output("error", name() + " frame " + std::to_string(pass.number()) + ": " +
                                      error.what());
     }
+    for (std::string &line : take_tesseract_messages())
+        pass.log("tesseract: " + line);
 }
 
 void OcrModule::on_destroyed()

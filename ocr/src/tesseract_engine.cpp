@@ -7,6 +7,7 @@
 #include <tesseract/resultiterator.h>
 
 #include "option_checks.hpp"
+#include "tesseract_messages.hpp"
 #include "ubii/ocr/error.hpp"
 
 namespace ubii::ocr::detail
@@ -40,6 +41,9 @@ TesseractEngine::TesseractEngine(const TesseractOptions &options)
     : api_(std::make_unique<tesseract::TessBaseAPI>()), options_(options)
 {
     check(options);
+    // Tesseract's messages into memory, not onto the process's stderr (tesseract_messages.hpp).
+    if (const std::string &messages = tesseract_message_file(); !messages.empty())
+        api_->SetVariable("debug_file", messages.c_str());
     const char *data_path = options.data_path.empty() ? nullptr : options.data_path.c_str();
     if (api_->Init(data_path, options.language.c_str(),
                    static_cast<tesseract::OcrEngineMode>(options.engine_mode)) != 0) {

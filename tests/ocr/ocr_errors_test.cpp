@@ -192,6 +192,24 @@ TEST(TinyImages, EveryPipelineReadsNothingInAFrameUnderThreeByThree)
     }
 }
 
+// A blank frame read as one line makes Tesseract print statistics through its own printf; they
+// land in take_tesseract_messages(), not on stderr.
+TEST(Tesseract, ItsOwnMessagesAreCapturedInsteadOfPrinted)
+{
+    PureOptions options;
+    options.tesseract.segmentation = Segmentation::single_line;
+    PurePipeline pipeline(options);
+    take_tesseract_messages(); // whatever earlier tests left
+    ::testing::internal::CaptureStderr();
+    const auto words = pipeline.recognise(cv::Mat(100, 200, CV_8UC1, cv::Scalar(255)));
+    const std::string printed = ::testing::internal::GetCapturedStderr();
+    EXPECT_TRUE(words.empty());
+    EXPECT_EQ(printed, "");
+    const auto messages = take_tesseract_messages();
+    EXPECT_THAT(messages, ::testing::Contains(HasSubstr("Total count=0")));
+    EXPECT_TRUE(take_tesseract_messages().empty()) << "taken twice";
+}
+
 TEST(Tesseract, MissingLanguageIsReportedAsEngineError)
 {
     PureOptions options;

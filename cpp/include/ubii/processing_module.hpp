@@ -203,6 +203,15 @@ class Pass
         return std::move(outputs_);
     }
 
+    // A line for the node's log (Scheduler::on_log; `ubii-node run` prints it with the module's
+    // id): what a library inside the module says, such as Tesseract's warnings. Handed on after
+    // the pass, from the thread that polls, whether the pass returned or threw.
+    void log(std::string line);
+    std::vector<std::string> take_log() noexcept
+    {
+        return std::move(log_);
+    }
+
   private:
     const Input &find(std::string_view input) const;
     void check_output(std::string_view output, const Value &value) const;
@@ -211,6 +220,7 @@ class Pass
     std::vector<Input> inputs_;
     const std::vector<ModuleIO> *declared_outputs_;
     std::vector<PassOutput> outputs_;
+    std::vector<std::string> log_;
     std::chrono::nanoseconds delta_;
     std::uint64_t number_;
 };

@@ -44,6 +44,8 @@ class Scheduler
     // Errors of modules: passes that threw (Status::callback_threw), records of the wrong type
     // (Status::wrong_type), outputs not published; the detail names the module.
     using ErrorHandler = std::function<void(Status status, std::string_view detail)>;
+    // The lines a pass logged (Pass::log), in order, after the pass; none without a handler.
+    using LogHandler = std::function<void(const ProcessingModule &module, std::string_view line)>;
 
     explicit Scheduler(Clock &clock = steady_clock());
     ~Scheduler(); // destroys every module
@@ -53,6 +55,7 @@ class Scheduler
     Clock &clock() const noexcept;
     void on_output(OutputSink sink);
     void on_error(ErrorHandler handler);
+    void on_log(LogHandler handler);
     // Called from a worker thread when a pass ended, so that a thread waiting for I/O wakes to
     // hand its outputs on (ubii::Node sets its port's wake-up). Without one, next_due() is at most
     // a millisecond away while a worker pass runs.

@@ -143,6 +143,56 @@ TEST_F(SchedulerTest, TriggerOnInputRunsWhenAnyInputUpdates)
     EXPECT_FALSE(scheduler.next_due()); // consumed: no second pass without a new record
 }
 
+// Pass::log lines reach on_log after the pass, in order, on the polling thread, from passes that
+// returned and from passes that threw; without a handler they go nowhere and nothing fails.
+TEST_F(SchedulerTest, LinesAPassLogsReachTheLogHandlerInOrderEvenWhenThePassThrew)
+{
+    std::vector<std::pair<std::string, std::string>> logged;
+    std::vector<std::thread::id> threads;
+    scheduler.on_log([&](const ubii::ProcessingModule &module, std::string_view line) {
+        logged.emplace_back(module.name(), std::string(line));
+        threads.push_back(std::this_thread::get_id());
+    });
+    const std::string id = add(
+        ubii::TriggerOnInput{},
+        [](Pass &pass) {
+            pass.log("first of pass " + std::to_string(pass.number()));
+            pass.log("second");
+            if (pass.input<double>("a") < 0)
+                throw std::runtime_error("negative");
+            pass.set_output("sum", pass.input<double>("a"));
+        },
+        ubii::Executor::worker);
+    const auto wait_for_lines = [&](std::size_t count) {
+        for (int i = 0; i < 2000 && logged.size() < count; ++i) {
+            std::this_thread::sleep_for(1ms);
+            scheduler.run_due();
+        }
+    };
+    scheduler.feed(id, "a", record("/a", 1.0));
+    scheduler.run_due();
+    wait_for_lines(2);
+    scheduler.feed(id, "a", record("/a", -1.0));
+    scheduler.run_due();
+    wait_for_lines(4);
+    ASSERT_EQ(logged.size(), 4u);
+    EXPECT_EQ(logged[0], std::make_pair(std::string("sum"), std::string("first of pass 1")));
+    EXPECT_EQ(logged[1].second, "second");
+    EXPECT_EQ(logged[2].second, "first of pass 2");
+    for (const auto thread : threads)
+        EXPECT_EQ(thread, std::this_thread::get_id());
+    ASSERT_EQ(errors.size(), 1u); // the throw is reported as before
+    scheduler.on_log({});
+    scheduler.feed(id, "a", record("/a", 2.0));
+    scheduler.run_due();
+    for (int i = 0; i < 2000 && published.size() < 2; ++i) {
+        std::this_thread::sleep_for(1ms);
+        scheduler.run_due();
+    }
+    EXPECT_EQ(published.size(), 2u);
+    EXPECT_EQ(logged.size(), 4u);
+}
+
 TEST_F(SchedulerTest, AllInputsNeedUpdateWaitsForEveryInput)
 {
     const std::string id = add(ubii::TriggerOnInput{0ms, true});

@@ -13,6 +13,7 @@
 #include "ubii/ocr/pipeline.hpp"
 #include "ubii/ocr/pipeline_factory.hpp"
 #include "ubii/ocr/pure_pipeline.hpp"
+#include "ubii/ocr/tesseract_messages.hpp"
 #include "ubii/ocr/tesseract_options.hpp"
 #include "ubii/ocr/text_box.hpp"
 
