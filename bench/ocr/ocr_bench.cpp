@@ -185,8 +185,7 @@ int main(int argc, char **argv)
                   << (args.east_model.empty() ? "no rows (give --east-model "
                                                 "frozen_east_text_detection.pb)"
                                               : args.east_model)
-                  << "; DB: " << ocr::default_db_model_path()
-                  << "\n\n";
+                  << "; DB: " << ocr::default_db_model_path() << "\n\n";
         std::cout
             << "| pipeline | scene | n | mean ms | rel std | median ms | precision | recall "
                "| CLI ms | CLI / pipeline | CLI as installed ms | CLI as installed / pipeline "
@@ -208,8 +207,8 @@ int main(int argc, char **argv)
             const auto cli_openmp_stats =
                 time_cli(image_path, segmentation, args.cli_runs, CliThreads::as_installed);
 
-            std::vector<ocr::PipelineKind> kinds = {ocr::PipelineKind::pure, ocr::PipelineKind::mser,
-                                                    ocr::PipelineKind::db};
+            std::vector<ocr::PipelineKind> kinds = {ocr::PipelineKind::pure,
+                                                    ocr::PipelineKind::mser, ocr::PipelineKind::db};
             // The generated test network is no text detector: its figures are not EAST's.
             if (!args.east_model.empty())
                 kinds.push_back(ocr::PipelineKind::east);

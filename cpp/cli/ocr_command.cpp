@@ -54,13 +54,14 @@ class LocalModule
     // `verbose`: the lines the module logs (Tesseract's own chatter) go to stderr.
     LocalModule(std::unique_ptr<ubii::ProcessingModule> module, bool verbose)
     {
-        scheduler_.on_output([this](const ubii::ProcessingModule &, const ubii::PassOutput &output) {
-            if (const auto *objects = output.value.get_if<ubii::Object2DList>())
-                result_.objects = *objects;
-            else if (const auto *text = output.value.get_if<std::string>())
-                result_.error = *text;
-            return ubii::Status::ok;
-        });
+        scheduler_.on_output(
+            [this](const ubii::ProcessingModule &, const ubii::PassOutput &output) {
+                if (const auto *objects = output.value.get_if<ubii::Object2DList>())
+                    result_.objects = *objects;
+                else if (const auto *text = output.value.get_if<std::string>())
+                    result_.error = *text;
+                return ubii::Status::ok;
+            });
         if (verbose)
             scheduler_.on_log([](const ubii::ProcessingModule &source, std::string_view line) {
                 std::cerr << "ubii-node: " << source.name() << ": " << line << '\n';
@@ -88,8 +89,9 @@ class LocalModule
     std::optional<FrameResult> read(ubii::Image2D image, std::chrono::duration<double> timeout)
     {
         result_ = {};
-        scheduler_.feed(id_, "image",
-                        std::make_shared<const ubii::Record>("image", ubii::Value(std::move(image))));
+        scheduler_.feed(
+            id_, "image",
+            std::make_shared<const ubii::Record>("image", ubii::Value(std::move(image))));
         const auto deadline = std::chrono::steady_clock::now() +
                               std::chrono::duration_cast<std::chrono::nanoseconds>(timeout);
         for (;;) {
@@ -123,8 +125,12 @@ std::vector<Word> words_of(const ubii::Object2DList &objects)
 {
     std::vector<Word> words;
     for (const auto &object : objects.elements()) {
-        Word word{object.id(), object.pose().position().x(), object.pose().position().y(),
-                  object.size().x(), object.size().y(), 0};
+        Word word{object.id(),
+                  object.pose().position().x(),
+                  object.pose().position().y(),
+                  object.size().x(),
+                  object.size().y(),
+                  0};
         const auto user_data = nlohmann::json::parse(object.user_data_json(), nullptr, false);
         if (user_data.is_object() && user_data.contains("confidence") &&
             user_data["confidence"].is_number())
@@ -138,9 +144,8 @@ void print_text(const std::string &file, const std::vector<Word> &words, double 
 {
     std::printf("%s: %zu words, %.0f ms\n", file.c_str(), words.size(), ms);
     for (const auto &word : words)
-        std::printf("  %-24s %5.0f,%-5.0f %4.0fx%-4.0f %3.0f\n",
-                    ("\"" + word.text + "\"").c_str(), word.left, word.top, word.width,
-                    word.height, word.confidence);
+        std::printf("  %-24s %5.0f,%-5.0f %4.0fx%-4.0f %3.0f\n", ("\"" + word.text + "\"").c_str(),
+                    word.left, word.top, word.width, word.height, word.confidence);
 }
 
 void print_json(const std::string &file, const std::string &module, const std::vector<Word> &words,
@@ -181,9 +186,9 @@ int recognise_files(OcrOptions &options, int verbosity)
         const auto started = std::chrono::steady_clock::now();
         const auto result =
             local->read(std::move(images[i]), std::chrono::duration<double>(options.timeout_s));
-        const double ms = std::chrono::duration<double, std::milli>(
-                              std::chrono::steady_clock::now() - started)
-                              .count();
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
+                .count();
         if (!result)
             throw CliError(exit_timeout, options.files[i] + ": no result within " +
                                              std::to_string(options.timeout_s) + " s");
@@ -209,8 +214,7 @@ void add_ocr_command(CLI::App &app, Context &context)
         "ocr", "Read the text in image files with an OCR processing module, here, without a "
                "master: the words with their boxes (left,top widthxheight) and confidences");
     auto options = std::make_shared<OcrOptions>();
-    command->add_option("FILE", options->files, "image files (anything OpenCV reads)")
-        ->required();
+    command->add_option("FILE", options->files, "image files (anything OpenCV reads)")->required();
     command
         ->add_option("--pipeline", options->pipeline,
                      "pure (TesseractOCR_PURE), mser (TesseractOCR_MSER), east "

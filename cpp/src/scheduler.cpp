@@ -84,7 +84,7 @@ std::string Scheduler::add(std::unique_ptr<ProcessingModule> module)
     auto runner = std::make_unique<detail::ModuleRunner>(
         std::move(module), id,
         detail::ModuleRunner::Context{impl_->clock, impl_->output, impl_->error, impl_->log,
-                                     impl_->wake});
+                                      impl_->wake});
     runner->create();
     impl_->runners.emplace(id, std::move(runner));
     return id;

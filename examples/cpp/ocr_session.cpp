@@ -101,13 +101,14 @@ int main(int argc, char **argv)
         std::vector<ubii::Subscription> subscriptions;
         for (const std::string &module : modules)
             subscriptions.push_back(node.subscribe<ubii::Object2DList>(
-                words_topic + module, [&arrived, module](const ubii::Object2DList &words,
-                                                         const ubii::RecordInfo &) {
+                words_topic + module,
+                [&arrived, module](const ubii::Object2DList &words, const ubii::RecordInfo &) {
                     arrived[module] = {words, Clock::now()};
                 }));
         subscriptions.push_back(node.subscribe<std::string>(
-            error_topic,
-            [&errors](const std::string &error, const ubii::RecordInfo &) { errors.push_back(error); }));
+            error_topic, [&errors](const std::string &error, const ubii::RecordInfo &) {
+                errors.push_back(error);
+            }));
         const auto poll_until = [&node](const auto &done, std::chrono::milliseconds timeout) {
             const auto until = Clock::now() + timeout;
             while (!done() && Clock::now() < until)
@@ -146,10 +147,11 @@ int main(int argc, char **argv)
                     ++failures;
                     continue;
                 }
-                std::printf("  %-18s %2d words %5.0f ms  %s\n", module.c_str(),
-                            found->second.words.elements_size(),
-                            std::chrono::duration<double, std::milli>(found->second.at - sent).count(),
-                            words_text(found->second.words, 80).c_str());
+                std::printf(
+                    "  %-18s %2d words %5.0f ms  %s\n", module.c_str(),
+                    found->second.words.elements_size(),
+                    std::chrono::duration<double, std::milli>(found->second.at - sent).count(),
+                    words_text(found->second.words, 80).c_str());
             }
             for (const std::string &error : errors)
                 std::printf("  error: %s\n", error.c_str());

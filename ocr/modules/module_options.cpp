@@ -24,8 +24,8 @@ Segmentation parse_segmentation(const std::string &text)
 {
     const auto found = segmentations().find(text);
     if (found == segmentations().end())
-        throw ubii::ocr::InvalidArgument("psm must be auto, block, line, word, char or sparse, not '" +
-                                         text + "'");
+        throw ubii::ocr::InvalidArgument(
+            "psm must be auto, block, line, word, char or sparse, not '" + text + "'");
     return found->second;
 }
 
@@ -80,8 +80,9 @@ PipelineOptions options_from(PipelineKind kind, const ModuleArguments &arguments
 
 std::string arguments_help(PipelineKind kind)
 {
-    std::string help = "Arguments: lang (eng), tessdata (Tesseract's path), psm (auto, block, line, "
-                       "word, char, sparse), min_confidence (0..100, 70), dpi (300)";
+    std::string help =
+        "Arguments: lang (eng), tessdata (Tesseract's path), psm (auto, block, line, "
+        "word, char, sparse), min_confidence (0..100, 70), dpi (300)";
     switch (kind) {
     case PipelineKind::east:
         help += ", model (frozen_east_text_detection.pb: required, not shipped), input_size "

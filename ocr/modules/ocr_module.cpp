@@ -14,10 +14,10 @@ namespace
 
 ModuleDescription describe(std::string name, std::string what, PipelineKind kind)
 {
-    ModuleDescription description(
-        std::move(name), std::move(what) + " " + arguments_help(kind),
-        {input<Image2D>("image")}, {output<Object2DList>("objects"), output<std::string>("error")},
-        TriggerOnInput{}, Executor::worker);
+    ModuleDescription description(std::move(name), std::move(what) + " " + arguments_help(kind),
+                                  {input<Image2D>("image")},
+                                  {output<Object2DList>("objects"), output<std::string>("error")},
+                                  TriggerOnInput{}, Executor::worker);
     description.tags = {"ocr", "tesseract", std::string(to_string(kind))};
     description.authors = {"libubii"};
     return description;
@@ -44,11 +44,12 @@ void OcrModule::on_processing(Pass &pass)
     if (frame == nullptr)
         return;
     try {
-        pass.set_output("objects", to_object2d_list(pipeline_->recognise(image_to_mat(frame->image()))));
+        pass.set_output("objects",
+                        to_object2d_list(pipeline_->recognise(image_to_mat(frame->image()))));
     } catch (const ocr::Error &error) {
         // The frame's sender only sees records: an error record says why nothing came back.
-        pass.set_output("error", name() + " frame " + std::to_string(pass.number()) + ": " +
-                                     error.what());
+        pass.set_output("error",
+                        name() + " frame " + std::to_string(pass.number()) + ": " + error.what());
     }
     for (std::string &line : take_tesseract_messages())
         pass.log("tesseract: " + line);

@@ -35,8 +35,8 @@ cv::dnn::Net load_network(const std::string &path)
             throw ModelError("'" + path + "' holds no network" + fetch_hint);
         return net;
     } catch (const cv::Exception &error) {
-        throw ModelError("OpenCV could not load the DB text detector '" + path +
-                         "': " + error.msg + fetch_hint);
+        throw ModelError("OpenCV could not load the DB text detector '" + path + "': " + error.msg +
+                         fetch_hint);
     }
 }
 
@@ -79,9 +79,8 @@ LineQuad as_text_quad(const std::array<cv::Point2f, 4> &corners)
         return std::abs(to.x - from.x) - std::abs(to.y - from.y);
     };
     // Sides 0-1 and 2-3, or 1-2 and 3-0: the first index of the top side's pair.
-    const int first = horizontalness(corners[0], corners[1]) >= horizontalness(corners[1], corners[2])
-                          ? 0
-                          : 1;
+    const int first =
+        horizontalness(corners[0], corners[1]) >= horizontalness(corners[1], corners[2]) ? 0 : 1;
     const int a = first, b = (first + 1) % 4, c = (first + 2) % 4, d = (first + 3) % 4;
     // Sides a-b and c-d run along the text; the one higher in the frame is the top.
     const bool ab_on_top = corners[a].y + corners[b].y <= corners[c].y + corners[d].y;
@@ -96,14 +95,15 @@ LineQuad as_text_quad(const std::array<cv::Point2f, 4> &corners)
 } // namespace
 
 DbDetector::DbDetector(const DbOptions &options)
-    : options_(options), net_(load_network(options.model_path.empty() ? default_db_model_path()
-                                                                     : options.model_path))
+    : options_(options),
+      net_(load_network(options.model_path.empty() ? default_db_model_path() : options.model_path))
 {
 }
 
 cv::Size DbDetector::input_size(cv::Size frame) const
 {
-    const double scale = options_.max_side / static_cast<double>(std::max(frame.width, frame.height));
+    const double scale =
+        options_.max_side / static_cast<double>(std::max(frame.width, frame.height));
     return {stride_multiple(frame.width * scale), stride_multiple(frame.height * scale)};
 }
 
@@ -118,8 +118,7 @@ std::vector<LineQuad> DbDetector::detect(const cv::Mat &bgr)
         throw ModelError("the DB text detector failed on a " + std::to_string(input.width) + "x" +
                          std::to_string(input.height) + " input: " + error.msg);
     }
-    if (output.dims != 4 || output.size[0] != 1 || output.size[1] != 1 ||
-        output.type() != CV_32F)
+    if (output.dims != 4 || output.size[0] != 1 || output.size[1] != 1 || output.type() != CV_32F)
         throw ModelError("the DB text detector's output is not one 1x1xHxW probability map");
     const cv::Mat probability(output.size[2], output.size[3], CV_32F, output.ptr<float>());
 

@@ -58,10 +58,10 @@ std::vector<ocr::TextBox> words_of(const nlohmann::json &line)
     std::vector<ocr::TextBox> words;
     for (const auto &word : line.at("words")) {
         const auto &box = word.at("box");
-        words.push_back({word.at("text").get<std::string>(), word.at("confidence").get<float>(),
-                         cv::Rect(box[0].get<int>(), box[1].get<int>(), box[2].get<int>(),
-                                  box[3].get<int>()),
-                         std::nullopt});
+        words.push_back(
+            {word.at("text").get<std::string>(), word.at("confidence").get<float>(),
+             cv::Rect(box[0].get<int>(), box[1].get<int>(), box[2].get<int>(), box[3].get<int>()),
+             std::nullopt});
     }
     return words;
 }
@@ -114,8 +114,8 @@ TEST(OcrCommand, MistakesAreRefusedWithTheCliExitCodes)
     EXPECT_EQ(outcome.exit_code, 5);
     EXPECT_THAT(outcome.err, HasSubstr("EAST needs a model file"));
 
-    outcome = ubii_node({"ocr", "--pipeline", "db", "--arg", "model=/nonexistent/db.onnx",
-                         sign.path()});
+    outcome =
+        ubii_node({"ocr", "--pipeline", "db", "--arg", "model=/nonexistent/db.onnx", sign.path()});
     EXPECT_EQ(outcome.exit_code, 5);
     EXPECT_THAT(outcome.err, HasSubstr("scripts/ocr-models.sh"));
 }

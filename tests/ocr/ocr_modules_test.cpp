@@ -102,20 +102,21 @@ std::vector<ocr::TextBox> words_of(const ubii::Object2DList &list)
 {
     std::vector<ocr::TextBox> words;
     for (const auto &object : list.elements())
-        words.push_back({object.id(), 100.0f,
-                         cv::Rect(static_cast<int>(object.pose().position().x()),
-                                  static_cast<int>(object.pose().position().y()),
-                                  static_cast<int>(object.size().x()),
-                                  static_cast<int>(object.size().y())),
-                         std::nullopt});
+        words.push_back(
+            {object.id(), 100.0f,
+             cv::Rect(static_cast<int>(object.pose().position().x()),
+                      static_cast<int>(object.pose().position().y()),
+                      static_cast<int>(object.size().x()), static_cast<int>(object.size().y())),
+             std::nullopt});
     return words;
 }
 
 TEST(OcrPlugin, OffersTheFourModulesWithImageInAndObjectsAndErrorOut)
 {
     const ubii::ModuleRegistry registry = plugin_modules();
-    EXPECT_EQ(registry.names(), (std::vector<std::string>{"TesseractOCR_EAST", "TesseractOCR_MSER",
-                                                          "TesseractOCR_PURE", "TextDetection_DB"}));
+    EXPECT_EQ(registry.names(),
+              (std::vector<std::string>{"TesseractOCR_EAST", "TesseractOCR_MSER",
+                                        "TesseractOCR_PURE", "TextDetection_DB"}));
     for (const std::string &name : registry.names()) {
         const auto &spec = registry.spec(name);
         ASSERT_EQ(spec.inputs_size(), 1) << name;
@@ -132,16 +133,21 @@ TEST(OcrPlugin, OffersTheFourModulesWithImageInAndObjectsAndErrorOut)
 TEST(OcrPlugin, ArgumentsOutOfRangeOrMisspeltAreRefusedWhenConfigured)
 {
     ubii::ModuleRegistry registry = plugin_modules();
-    EXPECT_THAT([&] { registry.configure("TesseractOCR_PURE", {{"min_confidence", "200"}}); },
-                ::testing::Throws<ocr::InvalidArgument>());
+    EXPECT_THAT(
+        [&] {
+            registry.configure("TesseractOCR_PURE", {{"min_confidence", "200"}});
+        },
+        ::testing::Throws<ocr::InvalidArgument>());
     EXPECT_THROW(registry.configure("TesseractOCR_PURE", {{"min_confidence", "high"}}),
                  ubii::InvalidArgument);
     EXPECT_THROW(registry.configure("TesseractOCR_PURE", {{"psm", "diagonal"}}),
                  ocr::InvalidArgument);
     EXPECT_THROW(registry.configure("TesseractOCR_EAST", {{"input_size", "300x320"}}),
                  ocr::InvalidArgument);
-    EXPECT_THROW(registry.configure("TextDetection_DB", {{"input_size", "8"}}), ocr::InvalidArgument);
-    EXPECT_THROW(registry.configure("TesseractOCR_PURE", {{"langauge", "deu"}}), ubii::InvalidArgument);
+    EXPECT_THROW(registry.configure("TextDetection_DB", {{"input_size", "8"}}),
+                 ocr::InvalidArgument);
+    EXPECT_THROW(registry.configure("TesseractOCR_PURE", {{"langauge", "deu"}}),
+                 ubii::InvalidArgument);
     EXPECT_NO_THROW(registry.configure("TesseractOCR_PURE", {{"psm", "auto"}, {"lang", "eng"}}));
 }
 

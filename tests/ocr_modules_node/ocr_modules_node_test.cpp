@@ -74,9 +74,9 @@ constexpr const char *module = "TesseractOCR_PURE";
 std::vector<std::string> run_command(const std::string &topic_url,
                                      const std::vector<std::string> &wires)
 {
-    std::vector<std::string> command = {
-        UBII_NODE_CLI, "--service-url", ubii_test::service_url(), "--topic-url", topic_url,
-        "--connect-timeout", "10", "run", module};
+    std::vector<std::string> command = {UBII_NODE_CLI, "--service-url", ubii_test::service_url(),
+                                        "--topic-url", topic_url,       "--connect-timeout",
+                                        "10",          "run",           module};
     for (const std::string &wire : wires) {
         command.push_back("--wire");
         command.push_back(std::string(module) + ":" + wire);
@@ -201,7 +201,8 @@ TEST_F(OcrModulesNode, RecognisesAnImageFromTheNodeJsNodeAndPublishesTheWords)
 
     // The module's timing on SIGUSR1: the passes made and the frames replaced before one ran.
     node.signal(SIGUSR1);
-    const int timing = wait_for_line(node, "timing TesseractOCR_PURE .*passes=([0-9]+).*dropped=([0-9]+)", 5s);
+    const int timing =
+        wait_for_line(node, "timing TesseractOCR_PURE .*passes=([0-9]+).*dropped=([0-9]+)", 5s);
     ASSERT_GE(timing, 0) << all_lines(node);
     std::smatch counts;
     const std::string line = node.lines()[static_cast<size_t>(timing)];
@@ -225,8 +226,8 @@ TEST_F(OcrModulesNode, AMalformedFrameGivesAnErrorRecordAndTheNextGoodFrameIsRec
     const std::string good_file = scene_file().directory + "/good";
     std::remove(good_file.c_str());
     ChildProcess publisher(publisher_command(input_, 1, good_file));
-    ASSERT_TRUE(receiver_.poll_until(
-        [&] { return !on_topic(receiver_.received(), errors_).empty(); }, 15s))
+    ASSERT_TRUE(
+        receiver_.poll_until([&] { return !on_topic(receiver_.received(), errors_).empty(); }, 15s))
         << "no error record for the malformed frame:" << all_lines(node)
         << "\npublisher said:" << all_lines(publisher);
     const auto *error = on_topic(receiver_.received(), errors_).front();
@@ -239,8 +240,8 @@ TEST_F(OcrModulesNode, AMalformedFrameGivesAnErrorRecordAndTheNextGoodFrameIsRec
     EXPECT_TRUE(on_topic(receiver_.received(), output_).empty()) << "a malformed frame was read";
 
     std::ofstream(good_file).put('\n');
-    ASSERT_TRUE(receiver_.poll_until(
-        [&] { return !on_topic(receiver_.received(), output_).empty(); }, 15s))
+    ASSERT_TRUE(
+        receiver_.poll_until([&] { return !on_topic(receiver_.received(), output_).empty(); }, 15s))
         << "the good frame after the bad one was not recognised:" << all_lines(node);
     expect_scene_words(*on_topic(receiver_.received(), output_).front());
     publisher.stop(SIGTERM, 2s);
