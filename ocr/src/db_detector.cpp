@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include <opencv2/dnn.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "line_crop.hpp"
 #include "ubii/ocr/error.hpp"
 
 namespace ubii::ocr::detail
@@ -20,19 +23,27 @@ constexpr float min_line_side = 3.0f;
 const cv::Scalar imagenet_mean(0.485 * 255, 0.456 * 255, 0.406 * 255);
 constexpr double imagenet_scale = 1.0 / (255.0 * 0.226);
 
-cv::dnn::Net load_network(const std::string &path)
+constexpr const char *fetch_hint =
+    " (scripts/ocr-models.sh fetches PaddleOCR's PP-OCRv4 detector and rewrites it for OpenCV "
+    "4.6; or set DbOptions::model_path, the module argument `model` or UBII_OCR_DB_MODEL)";
+
+constexpr std::size_t kept_networks = 4;
+
+std::vector<uchar> read_model(const std::string &path)
 {
-    const std::string fetch_hint =
-        " (scripts/ocr-models.sh fetches PaddleOCR's PP-OCRv4 detector and rewrites it for "
-        "OpenCV 4.6; or set DbOptions::model_path, the module argument `model` or "
-        "UBII_OCR_DB_MODEL)";
-    if (!std::ifstream(path, std::ios::binary).good())
+    std::ifstream file(path, std::ios::binary);
+    if (!file.good())
         throw ModelError("the DB text detector '" + path + "' is missing or unreadable" +
                          fetch_hint);
+    return std::vector<uchar>(std::istreambuf_iterator<char>(file), {});
+}
+
+cv::dnn::Net load_network(const std::vector<uchar> &model, const std::string &path)
+{
     try {
-        cv::dnn::Net net = cv::dnn::readNet(path);
+        cv::dnn::Net net = cv::dnn::readNetFromONNX(model);
         if (net.empty())
-            throw ModelError("'" + path + "' holds no network" + fetch_hint);
+            throw ModelError("'" + path + "' holds no network" + std::string(fetch_hint));
         return net;
     } catch (const cv::Exception &error) {
         throw ModelError("OpenCV could not load the DB text detector '" + path + "': " + error.msg +
@@ -71,33 +82,28 @@ cv::RotatedRect unclipped(const cv::RotatedRect &kernel, float ratio)
             kernel.angle};
 }
 
-// Orders a rectangle's corners as the text reads, taking the more nearly horizontal pair of
-// sides as the line's direction (text turned past 45 degrees is read sideways: not supported).
-LineQuad as_text_quad(const std::array<cv::Point2f, 4> &corners)
-{
-    const auto horizontalness = [](cv::Point2f from, cv::Point2f to) {
-        return std::abs(to.x - from.x) - std::abs(to.y - from.y);
-    };
-    // Sides 0-1 and 2-3, or 1-2 and 3-0: the first index of the top side's pair.
-    const int first =
-        horizontalness(corners[0], corners[1]) >= horizontalness(corners[1], corners[2]) ? 0 : 1;
-    const int a = first, b = (first + 1) % 4, c = (first + 2) % 4, d = (first + 3) % 4;
-    // Sides a-b and c-d run along the text; the one higher in the frame is the top.
-    const bool ab_on_top = corners[a].y + corners[b].y <= corners[c].y + corners[d].y;
-    const int top_from = ab_on_top ? a : c, top_to = ab_on_top ? b : d;
-    // Corners are cyclic: the bottom neighbour of each top corner is the one not on the top side.
-    const int next_of_to = (top_to + 1) % 4, next_of_from = (top_from + 3) % 4;
-    if (corners[top_from].x <= corners[top_to].x)
-        return {corners[top_from], corners[top_to], corners[next_of_to], corners[next_of_from]};
-    return {corners[top_to], corners[top_from], corners[next_of_from], corners[next_of_to]};
-}
-
 } // namespace
 
 DbDetector::DbDetector(const DbOptions &options)
     : options_(options),
-      net_(load_network(options.model_path.empty() ? default_db_model_path() : options.model_path))
+      path_(options.model_path.empty() ? default_db_model_path() : options.model_path),
+      model_(read_model(path_)), unused_(load_network(model_, path_))
 {
+}
+
+cv::dnn::Net &DbDetector::network_for(cv::Size input)
+{
+    for (auto entry = networks_.begin(); entry != networks_.end(); ++entry)
+        if (entry->first == input) {
+            networks_.splice(networks_.begin(), networks_, entry);
+            return networks_.front().second;
+        }
+    cv::dnn::Net net = unused_.empty() ? load_network(model_, path_) : unused_;
+    unused_ = cv::dnn::Net();
+    networks_.emplace_front(input, std::move(net));
+    if (networks_.size() > kept_networks)
+        networks_.pop_back();
+    return networks_.front().second;
 }
 
 cv::Size DbDetector::input_size(cv::Size frame) const
@@ -110,10 +116,11 @@ cv::Size DbDetector::input_size(cv::Size frame) const
 std::vector<LineQuad> DbDetector::detect(const cv::Mat &bgr)
 {
     const cv::Size input = input_size(bgr.size());
-    net_.setInput(cv::dnn::blobFromImage(bgr, imagenet_scale, input, imagenet_mean, true, false));
+    cv::dnn::Net &net = network_for(input);
+    net.setInput(cv::dnn::blobFromImage(bgr, imagenet_scale, input, imagenet_mean, true, false));
     cv::Mat output;
     try {
-        output = net_.forward();
+        output = net.forward();
     } catch (const cv::Exception &error) {
         throw ModelError("the DB text detector failed on a " + std::to_string(input.width) + "x" +
                          std::to_string(input.height) + " input: " + error.msg);

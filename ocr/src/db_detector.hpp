@@ -6,19 +6,19 @@
 // unclip, minimum-area rectangle), for any input size.
 
 #include <array>
+#include <list>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <opencv2/core/mat.hpp>
 #include <opencv2/dnn/dnn.hpp>
 
+#include "line_crop.hpp"
 #include "ubii/ocr/db_pipeline.hpp"
 
 namespace ubii::ocr::detail
 {
-
-// A detected line as four corners in the frame's pixels: top-left, top-right, bottom-right,
-// bottom-left as the text reads (the line's long side runs from top-left to top-right).
-using LineQuad = std::array<cv::Point2f, 4>;
 
 class DbDetector
 {
@@ -33,8 +33,16 @@ class DbDetector
     cv::Size input_size(cv::Size frame) const;
 
   private:
+    // OpenCV 4.6 fixes some of this network's shapes (its Resize layers) at the first input size
+    // a Net sees and gets every other size wrong afterwards, even the first again (no boxes at
+    // all): one Net per input size, the few most recent kept (a camera gives one size).
+    cv::dnn::Net &network_for(cv::Size input);
+
     DbOptions options_;
-    cv::dnn::Net net_;
+    std::string path_;
+    std::vector<uchar> model_;
+    std::list<std::pair<cv::Size, cv::dnn::Net>> networks_; // most recently used first
+    cv::dnn::Net unused_; // loaded by the constructor to check the model, for the first size
 };
 
 } // namespace ubii::ocr::detail

@@ -1,13 +1,17 @@
 #include "ubii/ocr/mser_pipeline.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <cmath>
 #include <string>
 
 #include <opencv2/features2d.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "character_regions.hpp"
 #include "grayscale.hpp"
+#include "line_crop.hpp"
 #include "option_checks.hpp"
 #include "tesseract_engine.hpp"
 #include "ubii/ocr/error.hpp"
@@ -18,6 +22,10 @@ namespace ubii::ocr
 
 namespace
 {
+
+// A run of three or more characters whose line turns further than this is cut out upright (two
+// characters' boxes say little about an angle).
+constexpr float max_level_turn_degrees = 2.0f;
 
 // Clutter (edges, lines) read as text comes back as punctuation alone ('\', '|', '/'): not text.
 bool has_letter_or_digit(const std::string &text)
@@ -103,27 +111,53 @@ std::vector<TextBox> MserPipeline::Impl::read_runs(
     std::vector<cv::Rect> characters;
     for (const auto &candidate : candidates)
         characters.push_back(candidate.box);
-    std::vector<cv::Rect> runs;
-    for (const auto &members : detail::cluster_words(characters, max_gap)) {
-        cv::Rect run = characters[members.front()];
-        for (const std::size_t i : members)
-            run |= characters[i];
-        runs.push_back(run);
-    }
-    runs = detail::merge_overlapping(std::move(runs));
+    const auto runs =
+        detail::merge_runs_sharing_ink(characters, detail::cluster_words(characters, max_gap));
 
-    // One SetImage per frame; each run is read through SetRectangle, which thresholds and reads
-    // only that part of the frame (no crop copies). Tesseract's word boxes come back in frame
-    // coordinates.
+    // A run's line: the smallest rectangle, at any angle, around its characters. Level runs are
+    // read where they are, through SetRectangle on one SetImage of the frame (no copies); a run
+    // turned further is cut out upright first, because its upright bounding box would take in
+    // parts of the lines above and below, which single-line mode then reads as one line.
     const cv::Rect frame(0, 0, gray.cols, gray.rows);
     const cv::Point margin(options.padding_px, options.padding_px);
-    engine.set_image(gray);
     std::vector<TextBox> words;
-    for (const auto &run : runs) {
+    const auto keep = [&words](TextBox &word) {
+        if (has_letter_or_digit(word.text))
+            words.push_back(std::move(word));
+    };
+    std::vector<detail::LineQuad> turned;
+    engine.set_image(gray);
+    for (const auto &members : runs) {
+        std::vector<cv::Point2f> corners;
+        for (const std::size_t i : members) {
+            const cv::Rect &box = characters[i];
+            corners.emplace_back(static_cast<float>(box.x), static_cast<float>(box.y));
+            corners.emplace_back(static_cast<float>(box.br().x), static_cast<float>(box.y));
+            corners.emplace_back(static_cast<float>(box.br().x), static_cast<float>(box.br().y));
+            corners.emplace_back(static_cast<float>(box.x), static_cast<float>(box.br().y));
+        }
+        std::array<cv::Point2f, 4> line;
+        cv::minAreaRect(corners).points(line.data());
+        const detail::LineQuad quad = detail::as_text_quad(line);
+        if (members.size() > 2 && detail::turn_degrees(quad) > max_level_turn_degrees) {
+            turned.push_back(quad);
+            continue;
+        }
+        const cv::Rect run = cv::boundingRect(corners);
         engine.set_rectangle(cv::Rect(run.tl() - margin, run.br() + margin) & frame);
         for (auto &word : engine.read_words())
-            if (has_letter_or_digit(word.text))
-                words.push_back(std::move(word));
+            keep(word);
+    }
+    for (const auto &quad : turned) {
+        const float height = std::hypot(quad[3].x - quad[0].x, quad[3].y - quad[0].y);
+        const detail::UprightLine line = detail::upright_line(
+            gray, quad, static_cast<float>(options.padding_px) / std::max(height, 1.0f));
+        if (line.pixels.empty())
+            continue;
+        engine.set_image(line.pixels);
+        for (auto &word : engine.read_words())
+            if (detail::place_in_frame(word, line.to_frame, frame))
+                keep(word);
     }
     detail::sort_reading_order(words);
     return words;

@@ -90,22 +90,32 @@ std::vector<TextBox> group_into_words(const std::vector<TextBox> &characters, fl
     return words;
 }
 
-std::vector<cv::Rect> merge_overlapping(std::vector<cv::Rect> boxes)
+std::vector<std::vector<std::size_t>>
+merge_runs_sharing_ink(const std::vector<cv::Rect> &boxes,
+                       std::vector<std::vector<std::size_t>> runs)
 {
-    // Repeated until nothing changes: a union can come to overlap a box it did not overlap before.
+    const auto share_ink = [&](const std::vector<std::size_t> &a,
+                               const std::vector<std::size_t> &b) {
+        for (const std::size_t i : a)
+            for (const std::size_t j : b) {
+                const double smaller = std::min(boxes[i].area(), boxes[j].area());
+                if ((boxes[i] & boxes[j]).area() > max_shared_area * smaller)
+                    return true;
+            }
+        return false;
+    };
+    // Repeated until nothing changes: a joined run can come to share ink with another.
     for (bool merged = true; merged;) {
         merged = false;
-        for (std::size_t i = 0; i < boxes.size() && !merged; ++i)
-            for (std::size_t j = i + 1; j < boxes.size() && !merged; ++j) {
-                const double smaller = std::min(boxes[i].area(), boxes[j].area());
-                if ((boxes[i] & boxes[j]).area() > max_shared_area * smaller) {
-                    boxes[i] |= boxes[j];
-                    boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(j));
+        for (std::size_t i = 0; i < runs.size() && !merged; ++i)
+            for (std::size_t j = i + 1; j < runs.size() && !merged; ++j)
+                if (share_ink(runs[i], runs[j])) {
+                    runs[i].insert(runs[i].end(), runs[j].begin(), runs[j].end());
+                    runs.erase(runs.begin() + static_cast<std::ptrdiff_t>(j));
                     merged = true;
                 }
-            }
     }
-    return boxes;
+    return runs;
 }
 
 void sort_reading_order(std::vector<TextBox> &words)

@@ -19,10 +19,13 @@ std::vector<TextBox> group_into_words(const std::vector<TextBox> &characters, fl
 std::vector<std::vector<std::size_t>> cluster_words(const std::vector<cv::Rect> &boxes,
                                                     float max_gap);
 
-// Boxes that share more than half of the smaller one's area are replaced by their union: they hold
-// the same letters (e.g. a word and a fragment of it left over from MSER's nested regions), which
-// would otherwise be read twice.
-std::vector<cv::Rect> merge_overlapping(std::vector<cv::Rect> boxes);
+// Runs (clusters of `boxes`) with a character each that share more than half of the smaller one's
+// area are joined: they hold the same letters (e.g. a word and a fragment of it left over from
+// MSER's nested regions), which would otherwise be read twice. Judged by the characters, not by
+// the runs' bounding boxes: those of neighbouring turned lines overlap although no letter does.
+std::vector<std::vector<std::size_t>>
+merge_runs_sharing_ink(const std::vector<cv::Rect> &boxes,
+                       std::vector<std::vector<std::size_t>> runs);
 
 // Top to bottom, then left to right.
 void sort_reading_order(std::vector<TextBox> &words);
