@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Checks that the tests which run a suite again with other settings really get those settings,
 as ctest will run them. A ';' inside a gtest_discover_tests ENVIRONMENT value splits it: the
-second tcp:// engine's suites once ran on the default engine unnoticed, and ocr_node_test without
-its thread limit.
+second tcp:// engine's suites once ran on the default engine unnoticed, and the OCR node's test
+without its thread limit.
 
     check_test_environment.py CTEST BUILD_DIR [REQUIRED_PREFIX ...]
 
@@ -15,7 +15,7 @@ import sys
 # Test name prefix -> variable -> value it must have.
 EXPECTED = {
     "libzmq.": {"UBII_TEST_ZMQ_ENGINE": "libzmq"},
-    "OcrNode": {"OMP_THREAD_LIMIT": "1"},
+    "OcrModulesNode": {"OMP_THREAD_LIMIT": "1"},
 }
 
 
