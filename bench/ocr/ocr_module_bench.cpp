@@ -5,12 +5,10 @@
 //
 //   ocr_module_bench [--frames N]
 #include <chrono>
-#include <condition_variable>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <mutex>
 #include <sstream>
 #include <string>
 
@@ -18,7 +16,7 @@
 #include "scenes.hpp"
 #include "ubii/module_discovery.hpp"
 #include "ubii/ocr/ocr.hpp"
-#include "ubii/scheduler.hpp"
+#include "ubii/standalone_module.hpp"
 
 namespace
 {
@@ -28,52 +26,35 @@ using ubii::bench::time_frames_interleaved;
 
 constexpr int warm_up_frames = 2;
 
-// One module in a scheduler; read() feeds one frame and returns when its output arrived.
+// One module as a node runs it; read() feeds one frame and returns when its output arrived.
 class ScheduledModule
 {
   public:
     explicit ScheduledModule(std::unique_ptr<ubii::ProcessingModule> module)
+        : module_(std::move(module))
     {
-        scheduler_.on_output([this](const ubii::ProcessingModule &, const ubii::PassOutput &out) {
-            if (out.name == "error")
-                throw std::runtime_error(out.value.as<std::string>());
-            ++outputs_;
-            return ubii::Status::ok;
-        });
-        scheduler_.set_waker([this] {
-            const std::lock_guard<std::mutex> lock(mutex_);
-            woken_ = true;
-            wake_.notify_one();
-        });
-        id_ = scheduler_.add(std::move(module));
-        scheduler_.start(id_);
-    }
-    ~ScheduledModule()
-    {
-        scheduler_.remove(id_);
+        module_.scheduler().on_output(
+            [this](const ubii::ProcessingModule &, const ubii::PassOutput &out) {
+                if (out.name == "error")
+                    error_ = out.value.as<std::string>();
+                ++outputs_;
+                return ubii::Status::ok;
+            });
     }
     void read(const std::shared_ptr<const ubii::Record> &frame)
     {
         const std::size_t before = outputs_;
-        scheduler_.feed(id_, "image", frame);
-        scheduler_.run_due();
-        while (outputs_ == before) {
-            std::unique_lock<std::mutex> lock(mutex_);
-            if (!wake_.wait_for(lock, std::chrono::seconds(60), [this] { return woken_; }))
-                throw std::runtime_error("no output within 60 s");
-            woken_ = false;
-            lock.unlock();
-            scheduler_.run_due();
-        }
+        module_.feed("image", frame);
+        if (!module_.run_until([&] { return outputs_ > before; }, std::chrono::seconds(60)))
+            throw std::runtime_error("no output within 60 s");
+        if (!error_.empty())
+            throw std::runtime_error(error_);
     }
 
   private:
-    ubii::Scheduler scheduler_;
-    std::string id_;
     std::size_t outputs_ = 0;
-    std::mutex mutex_;
-    std::condition_variable wake_;
-    bool woken_ = false;
+    std::string error_;
+    ubii::StandaloneModule module_;
 };
 
 std::shared_ptr<const ubii::Record> frame_record(const cv::Mat &bgr)

@@ -2,12 +2,10 @@
 // without a master. It runs the very module a session would (from the OCR plugin, through a
 // Scheduler of its own), so what it prints is what a session's subscribers would receive.
 #include <chrono>
-#include <condition_variable>
 #include <cstdio>
 #include <iostream>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
 
 #include "cli_error.hpp"
@@ -46,73 +44,48 @@ struct FrameResult {
     std::string error;
 };
 
-// The module in a scheduler of its own; its passes run on the module's worker thread, and the
-// waker tells this thread when one ended.
+// The module run here, on the files' images; its passes run on the module's worker thread.
 class LocalModule
 {
   public:
     // `verbose`: the lines the module logs (Tesseract's own chatter) go to stderr.
     LocalModule(std::unique_ptr<ubii::ProcessingModule> module, bool verbose)
+        : module_(std::move(module))
     {
-        scheduler_.on_output(
-            [this](const ubii::ProcessingModule &, const ubii::PassOutput &output) {
-                if (const auto *objects = output.value.get_if<ubii::Object2DList>())
-                    result_.objects = *objects;
-                else if (const auto *text = output.value.get_if<std::string>())
-                    result_.error = *text;
-                return ubii::Status::ok;
-            });
+        ubii::Scheduler &scheduler = module_.scheduler();
+        scheduler.on_output([this](const ubii::ProcessingModule &, const ubii::PassOutput &output) {
+            if (const auto *objects = output.value.get_if<ubii::Object2DList>())
+                result_.objects = *objects;
+            else if (const auto *text = output.value.get_if<std::string>())
+                result_.error = *text;
+            return ubii::Status::ok;
+        });
         if (verbose)
-            scheduler_.on_log([](const ubii::ProcessingModule &source, std::string_view line) {
+            scheduler.on_log([](const ubii::ProcessingModule &source, std::string_view line) {
                 std::cerr << "ubii-node: " << source.name() << ": " << line << '\n';
             });
-        scheduler_.on_error([this](ubii::Status, std::string_view detail) {
+        scheduler.on_error([this](ubii::Status, std::string_view detail) {
             if (result_.error.empty())
                 result_.error = std::string(detail);
         });
-        scheduler_.set_waker([this] {
-            const std::lock_guard<std::mutex> lock(mutex_);
-            woken_ = true;
-            wake_.notify_one();
-        });
-        id_ = scheduler_.add(std::move(module));
-        scheduler_.start(id_);
     }
-    ~LocalModule()
-    {
-        scheduler_.remove(id_);
-    }
-    LocalModule(const LocalModule &) = delete;
-    LocalModule &operator=(const LocalModule &) = delete;
 
     // One frame through the module: nothing if no pass ended within `timeout`.
     std::optional<FrameResult> read(ubii::Image2D image, std::chrono::duration<double> timeout)
     {
         result_ = {};
-        scheduler_.feed(
-            id_, "image",
-            std::make_shared<const ubii::Record>("image", ubii::Value(std::move(image))));
-        const auto deadline = std::chrono::steady_clock::now() +
-                              std::chrono::duration_cast<std::chrono::nanoseconds>(timeout);
-        for (;;) {
-            scheduler_.run_due();
-            // An OCR module answers every frame with objects or an error record.
-            if (result_.objects || !result_.error.empty())
-                return result_;
-            std::unique_lock<std::mutex> lock(mutex_);
-            if (!wake_.wait_until(lock, deadline, [this] { return woken_; }))
-                return std::nullopt;
-            woken_ = false;
-        }
+        module_.feed("image",
+                     std::make_shared<const ubii::Record>("image", ubii::Value(std::move(image))));
+        // An OCR module answers every frame with objects or an error record.
+        if (!module_.run_until([this] { return result_.objects || !result_.error.empty(); },
+                               std::chrono::duration_cast<std::chrono::nanoseconds>(timeout)))
+            return std::nullopt;
+        return result_;
     }
 
   private:
-    ubii::Scheduler scheduler_;
-    std::string id_;
     FrameResult result_;
-    std::mutex mutex_;
-    std::condition_variable wake_;
-    bool woken_ = false;
+    ubii::StandaloneModule module_;
 };
 
 struct Word {

@@ -25,12 +25,16 @@ ubii_cli_test::Outcome ubii_node(const std::vector<std::string> &arguments)
     return process.finish(60s);
 }
 
-// The scene as a PNG file, removed afterwards.
+// The scene as a PNG file of this test's own (ctest runs the cases in parallel), removed
+// afterwards.
 class SceneFile
 {
   public:
     explicit SceneFile(const std::string &name)
-        : scene_(ocr::test::scene(name)), path_(::testing::TempDir() + "ocr_cli_" + name + ".png")
+        : scene_(ocr::test::scene(name)),
+          path_(::testing::TempDir() + "ocr_cli_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + name +
+                ".png")
     {
         cv::imwrite(path_, scene_.image);
     }

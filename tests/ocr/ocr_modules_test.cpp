@@ -1,9 +1,7 @@
 // The OCR plugin as ubii-node loads it: its four modules, their arguments, and passes through a
 // scheduler as a node runs them (worker executor, latest frame wins, errors as records).
 #include <chrono>
-#include <condition_variable>
 #include <memory>
-#include <mutex>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -12,6 +10,7 @@
 #include "ubii/module_discovery.hpp"
 #include "ubii/ocr/image_records.hpp"
 #include "ubii/scheduler.hpp"
+#include "ubii/standalone_module.hpp"
 
 namespace
 {
@@ -39,46 +38,28 @@ ubii::Image2D image_record(const cv::Mat &bgr)
     return image;
 }
 
-// One module in a scheduler, as a node runs it; outputs collected by name.
+// One module as a node runs it (worker passes, outputs handed on in this thread), outputs
+// collected.
 class ModuleInScheduler
 {
   public:
     explicit ModuleInScheduler(std::unique_ptr<ubii::ProcessingModule> module)
+        : module_(std::move(module))
     {
-        scheduler_.on_output([this](const ubii::ProcessingModule &, const ubii::PassOutput &out) {
-            outputs_.push_back(out);
-            return ubii::Status::ok;
-        });
-        scheduler_.set_waker([this] {
-            const std::lock_guard<std::mutex> lock(mutex_);
-            woken_ = true;
-            wake_.notify_one();
-        });
-        id_ = scheduler_.add(std::move(module));
-        scheduler_.start(id_);
-    }
-    ~ModuleInScheduler()
-    {
-        scheduler_.remove(id_);
+        module_.scheduler().on_output(
+            [this](const ubii::ProcessingModule &, const ubii::PassOutput &out) {
+                outputs_.push_back(out);
+                return ubii::Status::ok;
+            });
     }
     void feed(const ubii::Image2D &image)
     {
-        scheduler_.feed(id_, "image", std::make_shared<const ubii::Record>("/in", image));
-        scheduler_.run_due();
+        module_.feed("image", std::make_shared<const ubii::Record>("/in", image));
     }
     // Runs until `count` outputs arrived or `timeout` passed.
     bool wait_for_outputs(std::size_t count, std::chrono::milliseconds timeout)
     {
-        const auto deadline = std::chrono::steady_clock::now() + timeout;
-        while (outputs_.size() < count) {
-            std::unique_lock<std::mutex> lock(mutex_);
-            if (!wake_.wait_until(lock, deadline, [this] { return woken_; }))
-                return false;
-            woken_ = false;
-            lock.unlock();
-            scheduler_.run_due();
-        }
-        return true;
+        return module_.run_until([&] { return outputs_.size() >= count; }, timeout);
     }
     const std::vector<ubii::PassOutput> &outputs() const
     {
@@ -86,16 +67,12 @@ class ModuleInScheduler
     }
     ubii::Timing timing() const
     {
-        return scheduler_.timing(id_);
+        return module_.timing();
     }
 
   private:
-    ubii::Scheduler scheduler_;
-    std::string id_;
     std::vector<ubii::PassOutput> outputs_;
-    std::mutex mutex_;
-    std::condition_variable wake_;
-    bool woken_ = false;
+    ubii::StandaloneModule module_;
 };
 
 std::vector<ocr::TextBox> words_of(const ubii::Object2DList &list)

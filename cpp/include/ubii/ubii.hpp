@@ -19,6 +19,7 @@
 #include "ubii/result.hpp"
 #include "ubii/running_module.hpp"
 #include "ubii/scheduler.hpp"
+#include "ubii/standalone_module.hpp"
 #include "ubii/service_call.hpp"
 #include "ubii/session_events.hpp"
 #include "ubii/timing.hpp"
