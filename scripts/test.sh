@@ -43,6 +43,6 @@ run_configuration embedded -DCMAKE_BUILD_TYPE=Debug -DUBII_SANITIZE=ON -DUBII_PO
   -DUBII_EMBEDDED_MAX_MESSAGE=16384
 # ThreadSanitizer for what runs threads: the processing modules' worker executor (C++ layer).
 TARGETS="ubii_npm_packages cpp_scheduler_test cpp_processing_module_test" \
-TESTS="SchedulerTest|ProcessingModule|TimingMetric" \
+TESTS="SchedulerTest|StandaloneModule|ProcessingModule|TimingMetric" \
   run_configuration tsan -DCMAKE_BUILD_TYPE=Debug -DUBII_SANITIZE_THREAD=ON
 echo "=== all configurations passed in $((SECONDS - started)) s"

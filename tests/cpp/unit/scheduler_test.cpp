@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "ubii/scheduler.hpp"
+#include "ubii/standalone_module.hpp"
 
 using namespace std::chrono_literals;
 using ubii::Pass;
@@ -646,6 +647,45 @@ TEST(TimingMetric, TheWindowKeepsTheLast30Durations)
     EXPECT_DOUBLE_EQ(stats.max.count(), 0.040);
     EXPECT_NEAR(stats.mean.count(), 0.0255, 1e-12);
     EXPECT_NEAR(stats.stddev.count(), 0.0086554, 1e-6);
+}
+
+} // namespace
+
+namespace
+{
+
+// A module run without a node: its worker passes end on their thread and run_until hands their
+// outputs on in this one; a wait for something that never comes ends at its timeout.
+TEST(StandaloneModuleTest, RunsWorkerPassesAndWaitsAtMostItsTimeout)
+{
+    ubii::ModuleDescription description{"twice",
+                                        "doubles a",
+                                        {ubii::input<double>("a")},
+                                        {ubii::output<double>("twice")},
+                                        ubii::TriggerOnInput{},
+                                        ubii::Executor::worker};
+    ubii::StandaloneModule module(ubii::make_module(description, [](Pass &pass) {
+        std::this_thread::sleep_for(20ms);
+        pass.set_output("twice", 2 * pass.input<double>("a"));
+    }));
+    std::vector<double> outputs;
+    std::vector<std::thread::id> threads;
+    module.scheduler().on_output([&](const ubii::ProcessingModule &, const ubii::PassOutput &out) {
+        outputs.push_back(out.value.as<double>());
+        threads.push_back(std::this_thread::get_id());
+        return ubii::Status::ok;
+    });
+    module.feed("a", std::make_shared<const Record>("/a", 21.0));
+    ASSERT_TRUE(module.run_until([&] { return !outputs.empty(); }, 5s));
+    EXPECT_EQ(outputs, std::vector<double>{42.0});
+    EXPECT_EQ(threads.front(), std::this_thread::get_id());
+    EXPECT_EQ(module.timing().passes, 1u);
+
+    const auto began = std::chrono::steady_clock::now();
+    EXPECT_FALSE(module.run_until([&] { return outputs.size() > 1; }, 100ms));
+    const auto waited = std::chrono::steady_clock::now() - began;
+    EXPECT_GE(waited, 100ms);
+    EXPECT_LT(waited, 2s);
 }
 
 } // namespace
