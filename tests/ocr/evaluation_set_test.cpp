@@ -1,6 +1,6 @@
 // The evaluation set (ocr/testing/evaluation_set.hpp) as a fixture of its own: its shape, that it
 // is deterministic and apart from the tuning scenes, and accuracy on it a margin below what
-// bench/ocr/eval.sh measured (in the comments), for the pipelines whose claims rest on it.
+// bench/ocr/run.sh eval measured (in the comments), for the pipelines whose claims rest on it.
 #include <map>
 #include <set>
 
