@@ -1,23 +1,15 @@
 #include "ubii/ocr/db_pipeline.hpp"
 
-#include <cmath>
 #include <cstdlib>
 
-#include <opencv2/imgproc.hpp>
-
 #include "db_detector.hpp"
-#include "line_crop.hpp"
 #include "grayscale.hpp"
+#include "line_crop.hpp"
 #include "option_checks.hpp"
 #include "tesseract_engine.hpp"
-#include "ubii/ocr/error.hpp"
 
 namespace ubii::ocr
 {
-namespace
-{
-
-} // namespace
 
 std::string default_db_model_path()
 {
