@@ -59,6 +59,9 @@ void add_module_options(CLI::App &command, ModuleOptions &options)
                     "in before UBII_MODULE_PATH and the installation's lib/ubii/modules")
         ->allow_extra_args(false)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    command.add_flag("--no-default-modules", options.only_given_dirs,
+                     "look only in the --modules DIRs, not in UBII_MODULE_PATH nor the "
+                     "installation's lib/ubii/modules");
     command
         .add_option("--module-arg", options.arguments,
                     "NAME:key=value, an argument for module NAME's factory; repeatable")
@@ -80,8 +83,9 @@ LoadedModules load_modules(const ModuleOptions &options, const std::vector<std::
             throw CliError(exit_usage, "--modules " + dir + ": no such file or directory");
         dirs.emplace_back(dir);
     }
-    for (const auto &dir : ubii::module_search_path())
-        dirs.push_back(dir);
+    if (!options.only_given_dirs)
+        for (const auto &dir : ubii::module_search_path())
+            dirs.push_back(dir);
     for (const auto &dir : dirs) {
         loaded.searched.push_back(dir.string());
         for (auto &report : ubii::load_plugins(loaded.registry, dir))

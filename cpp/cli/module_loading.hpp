@@ -16,6 +16,8 @@ namespace ubii::cli
 
 struct ModuleOptions {
     std::vector<std::string> dirs;
+    // Only `dirs`: not UBII_MODULE_PATH nor the installation's plugins.
+    bool only_given_dirs = false;
     // NAME:key=value
     std::vector<std::string> arguments;
 };

@@ -52,13 +52,14 @@ const char session_spec[] = R"({
 
 TEST(CliSessionOnTheCurrentMaster, RunServesAPluginModuleASessionStartedFromTheCommandLine)
 {
-    Process run(cli, with_master({"run", "--modules", plugins + "/good", "--module-arg",
-                                  "plugin_scale:factor=10", "--name", "cli-session-runner"}));
+    Process run(cli, with_master({"run", "--no-default-modules", "--modules", plugins + "/good",
+                                  "--module-arg", "plugin_scale:factor=10", "--name",
+                                  "cli-session-runner"}));
     ASSERT_TRUE(run.read_until(printed("offering plugin_negate, plugin_scale"), 20s))
         << run.out() << run.err();
 
-    Process sub(cli, with_master({"-v", "sub", "/cli/session/out", "--count", "2", "--timeout",
-                                  "40"}));
+    Process sub(cli,
+                with_master({"-v", "sub", "/cli/session/out", "--count", "2", "--timeout", "40"}));
     ASSERT_TRUE(sub.read_until(
         [](const std::string &, const std::string &err) { return has(err, "subscribed"); }, 20s))
         << sub.err();
