@@ -1,20 +1,25 @@
-// What the processing-module wrapping costs: each OCR module of the plugin, fed frames through a
-// scheduler as a node runs it (record in, pass on the module's worker thread, Object2DList out),
-// timed alternately frame by frame with its pipeline called directly on the same frame. Prints a
-// Markdown table with the ratio module / pipeline; asserts nothing.
+// What the processing-module wrapping costs: each OCR module (the plugin's classes), fed frames
+// through a scheduler as a node runs it (record in, pass on the module's worker thread,
+// Object2DList out), timed alternately frame by frame with the same pipeline instance called
+// directly on the same frame. A control row times two instances of one pipeline against each
+// other: they differ by more than the module adds (one instance's memory can run faster than
+// another's), which is why the module is compared with its own instance. Prints a Markdown table;
+// asserts nothing.
 //
 //   ocr_module_bench [--frames N]
 #include <chrono>
 #include <cstdlib>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "frame_timing.hpp"
 #include "scenes.hpp"
-#include "ubii/module_discovery.hpp"
+#include "ocr_module.hpp"
 #include "ubii/ocr/ocr.hpp"
 #include "ubii/standalone_module.hpp"
 
@@ -30,8 +35,8 @@ constexpr int warm_up_frames = 2;
 class ScheduledModule
 {
   public:
-    explicit ScheduledModule(std::unique_ptr<ubii::ProcessingModule> module)
-        : module_(std::move(module))
+    explicit ScheduledModule(std::unique_ptr<ocr::modules::OcrModule> module)
+        : ocr_(module.get()), module_(std::move(module))
     {
         module_.scheduler().on_output(
             [this](const ubii::ProcessingModule &, const ubii::PassOutput &out) {
@@ -51,7 +56,14 @@ class ScheduledModule
             throw std::runtime_error(error_);
     }
 
+    // The module's own pipeline, for the direct calls (between passes, never during one).
+    ocr::Pipeline &pipeline()
+    {
+        return *ocr_->pipeline();
+    }
+
   private:
+    ocr::modules::OcrModule *ocr_;
     std::size_t outputs_ = 0;
     std::string error_;
     ubii::StandaloneModule module_;
@@ -84,40 +96,45 @@ int main(int argc, char **argv)
         int frames = 20;
         if (argc == 3 && std::string(argv[1]) == "--frames")
             frames = std::stoi(argv[2]);
-        ubii::ModuleRegistry registry;
-        for (const auto &report : ubii::load_plugins(registry, UBII_OCR_PLUGIN))
-            for (const auto &error : report.errors)
-                throw std::runtime_error(error);
-        const std::pair<const char *, ocr::PipelineKind> modules[] = {
-            {"TesseractOCR_PURE", ocr::PipelineKind::pure},
-            {"TesseractOCR_MSER", ocr::PipelineKind::mser},
-            {"TextDetection_DB", ocr::PipelineKind::db}};
+        const std::vector<std::function<std::unique_ptr<ocr::modules::OcrModule>()>> modules = {
+            [] { return std::make_unique<ocr::modules::TesseractOcrPure>(); },
+            [] { return std::make_unique<ocr::modules::TesseractOcrMser>(); },
+            [] { return std::make_unique<ocr::modules::TextDetectionDb>(); }};
         std::cout << "OMP_THREAD_LIMIT=" << std::getenv("OMP_THREAD_LIMIT") << ", " << frames
                   << " frames per row, module and pipeline alternately after " << warm_up_frames
                   << " warm-up frames each\n\n"
                   << "| module | scene | module mean ms | pipeline mean ms | mean ratio | module "
                      "median ms | pipeline median ms | median ratio |\n"
                   << "|---|---|---|---|---|---|---|---|\n";
-        for (const auto &[name, kind] : modules) {
-            ScheduledModule module(registry.create(name));
-            // The pipeline with the options the module makes without arguments.
-            auto defaults = ocr::default_options(kind);
-            if (kind == ocr::PipelineKind::pure)
-                ocr::tesseract_options(defaults).segmentation = ocr::Segmentation::sparse_text;
-            const auto pipeline = ocr::make_pipeline(defaults);
-            for (const auto &scene : ocr::testdata::all_scenes()) {
+        const auto row = [](const std::string &name, const std::string &scene,
+                            const ubii::bench::FrameStats &first,
+                            const ubii::bench::FrameStats &second) {
+            std::cout << "| " << name << " | " << scene << " | " << fixed(first.mean_ms, 1) << " | "
+                      << fixed(second.mean_ms, 1) << " | "
+                      << fixed(first.mean_ms / second.mean_ms, 3) << "x | "
+                      << fixed(first.median_ms, 1) << " | " << fixed(second.median_ms, 1) << " | "
+                      << fixed(first.median_ms / second.median_ms, 3) << "x |" << std::endl;
+        };
+        const auto scenes = ocr::testdata::all_scenes();
+        for (const auto &make : modules) {
+            auto made = make();
+            const std::string name = made->name();
+            const auto options = made->options();
+            ScheduledModule module(std::move(made));
+            for (const auto &scene : scenes) {
                 const auto record = frame_record(scene.image);
                 const auto [through_module, direct] = time_frames_interleaved(
                     warm_up_frames, frames, [&] { module.read(record); },
-                    [&] { pipeline->recognise(scene.image); });
-                std::cout << "| " << name << " | " << scene.name << " | "
-                          << fixed(through_module.mean_ms, 1) << " | " << fixed(direct.mean_ms, 1)
-                          << " | " << fixed(through_module.mean_ms / direct.mean_ms, 3) << "x | "
-                          << fixed(through_module.median_ms, 1) << " | "
-                          << fixed(direct.median_ms, 1) << " | "
-                          << fixed(through_module.median_ms / direct.median_ms, 3) << "x |"
-                          << std::endl;
+                    [&] { module.pipeline().recognise(scene.image); });
+                row(name, scene.name, through_module, direct);
             }
+            // Control: another instance of the same pipeline against the module's own.
+            const auto other = ocr::make_pipeline(options);
+            const auto &scene = scenes.front();
+            const auto [second, first] = time_frames_interleaved(
+                warm_up_frames, frames, [&] { other->recognise(scene.image); },
+                [&] { module.pipeline().recognise(scene.image); });
+            row(name + " (control: another instance / the module's)", scene.name, second, first);
         }
         std::cout << "\nThe module's time runs from handing the scheduler the Image2D record to "
                      "receiving its Object2DList: the conversion of the record into a cv::Mat, "

@@ -29,6 +29,13 @@ class OcrModule : public ProcessingModule
     {
         return options_;
     }
+    // The pipeline its passes run (nullptr until created), for a benchmark that times the same
+    // instance called directly: two instances of one pipeline can differ in speed by more than
+    // the module adds (bench/ocr/ocr_module_bench.cpp).
+    Pipeline *pipeline() noexcept
+    {
+        return pipeline_.get();
+    }
 
   protected:
     void on_created() override;
