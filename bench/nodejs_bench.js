@@ -3,7 +3,10 @@
 //   node nodejs_bench.js CLIENT_PACKAGE_DIR SERVICE_URL TOPIC_URL [ROUNDS [MESSAGES [WINDOW]]]
 'use strict';
 const [packageDir, serviceUrl, topicUrl, roundsText, messagesText, windowText] = process.argv.slice(2);
-const { UbiiClientNode } = require(packageDir);
+const path = require('path');
+const clientDir = path.resolve(packageDir);
+require(path.join(__dirname, '../tests/support', 'nodejs_scratch_dir.js')).enter(); // before the client loads
+const { UbiiClientNode } = require(clientDir);
 const rounds = Number(roundsText || 2000);
 const messages = Number(messagesText || 20000);
 const windowSize = Number(windowText || 100);

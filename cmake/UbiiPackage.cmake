@@ -1,4 +1,5 @@
-# find_package(ubii) config files and a pkg-config file, installed beside the libraries.
+# find_package(ubii) config files and pkg-config files (ubii: the shared library; ubii-static:
+# libubii.a), installed beside the libraries.
 include(CMakePackageConfigHelpers)
 
 set(UBII_CMAKE_INSTALL_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/ubii")
@@ -15,9 +16,11 @@ file(RELATIVE_PATH UBII_PC_TO_PREFIX "/root/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "
 string(REGEX REPLACE "/$" "" UBII_PC_TO_PREFIX "${UBII_PC_TO_PREFIX}")
 list(JOIN UBII_SANITIZE_LINK_FLAGS " " UBII_PC_LINK_FLAGS)
 configure_file(cmake/ubii.pc.in "${CMAKE_CURRENT_BINARY_DIR}/ubii.pc" @ONLY)
-install(FILES "${CMAKE_CURRENT_BINARY_DIR}/ubii.pc" DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
+configure_file(cmake/ubii-static.pc.in "${CMAKE_CURRENT_BINARY_DIR}/ubii-static.pc" @ONLY)
+install(FILES "${CMAKE_CURRENT_BINARY_DIR}/ubii.pc" "${CMAKE_CURRENT_BINARY_DIR}/ubii-static.pc"
+        DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")
 
-# pkg-config for the C++ layer: its static library on the static libubii and libprotobuf.
+# pkg-config for the C++ layer: the shared layer on the shared libubii, and libprotobuf.
 if(UBII_WITH_CPP)
   configure_file(cmake/ubii-cpp.pc.in "${CMAKE_CURRENT_BINARY_DIR}/ubii-cpp.pc" @ONLY)
   install(FILES "${CMAKE_CURRENT_BINARY_DIR}/ubii-cpp.pc" DESTINATION "${CMAKE_INSTALL_LIBDIR}/pkgconfig")

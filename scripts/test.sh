@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# The test command: installs what is missing (Debian packages, npm packages), builds libubii three
-# times (Linux port plain, Linux port with AddressSanitizer + UndefinedBehaviorSanitizer, both with
-# the OCR pipelines; embedded port with both sanitizers) and runs the whole suite on each (and the
-# C++ layer's threaded parts under ThreadSanitizer), inside a
-# private network namespace where a real master is started and stopped by the tests. The embedded
-# configuration's suite also builds and tests the reduced "topics" schema (tests/schema).
+# The test command: installs what is missing (Debian packages, npm packages), builds libubii four
+# times and runs the suite on each, inside a private network namespace where a real master is
+# started and stopped by the tests: the Linux port plain (build/test) and with AddressSanitizer +
+# UndefinedBehaviorSanitizer (build/asan), both with the OCR pipelines; the embedded port with both
+# sanitizers (build/embedded), whose suite also builds and tests the reduced "topics" schema
+# (tests/schema); and the C++ layer's threaded parts under ThreadSanitizer (build/tsan).
 #
-#   scripts/test.sh            build trees in ./build/test and ./build/asan
+#   scripts/test.sh            build trees in ./build/{test,asan,embedded,tsan}
 #   UBII_BUILD_DIR=DIR ...     build trees below DIR instead
 #   UBII_CACHE_DIR=DIR ...     fetched sources and npm packages in DIR (default ~/.cache/libubii)
 set -euo pipefail

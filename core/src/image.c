@@ -2,7 +2,7 @@
  * read nor when written. */
 #include <string.h>
 
-#include "node_internal.h"
+#include "publish.h"
 #include "ubii/image.h"
 #include "wire_scan.h"
 

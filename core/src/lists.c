@@ -5,7 +5,8 @@
 #include <pb_decode.h>
 #include <pb_encode.h>
 
-#include "node_internal.h"
+#include "publish.h"
+#include "record.h"
 #include "ubii/lists.h"
 #include "ubii/wire.h"
 #include "wire_scan.h"

@@ -3,25 +3,32 @@
 
 #include <pb_decode.h>
 
-#include "node_internal.h"
+#include "copy_string.h"
+#include "node_events.h"
+#include "record.h"
+#include "service_queue.h"
+#include "subscriptions.h"
 #include "ubii/servers/server.pb.h"
+#include "ubii/url.h"
 
-enum { STOP_POLL_SLICE_MS = 20 };
+enum {
+    STOP_POLL_SLICE_MS = 20,
+    DEFAULT_SERVICE_TIMEOUT_MS = 5000,
+    DEFAULT_PING_TIMEOUT_MS = 5000,
+    DEFAULT_RECONNECT_MIN_MS = 250,
+    DEFAULT_RECONNECT_MAX_MS = 8000,
+    LONGEST_WAIT_MS = 0x7fffffff, /* what fits poll()'s int timeout */
+    KEEPALIVE_SIZE = 4
+};
 
-bool ubii__copy_string(char *destination, size_t capacity, const char *source)
-{
-    size_t length = strlen(source);
-    if (length >= capacity) {
-        return false;
-    }
-    memcpy(destination, source, length + 1);
-    return true;
-}
+/* The master's keep-alive on the topic channel, and the node's answer (docs/PROTOCOL.md §2.5). */
+static const char keepalive_ping[KEEPALIVE_SIZE] = {'P', 'I', 'N', 'G'};
+static const char keepalive_pong[KEEPALIVE_SIZE] = {'P', 'O', 'N', 'G'};
 
-uint64_t ubii__now(ubii_node *node)
-{
-    return node->port.vtable->monotonic_ms(node->port.context);
-}
+static void on_server_configuration(ubii_node *node, const ubii_reply *reply, void *unused);
+static void on_registration(ubii_node *node, const ubii_reply *reply, void *unused);
+static void on_release(ubii_node *node, const ubii_reply *reply, void *unused);
+static void on_deregistration(ubii_node *node, const ubii_reply *reply, void *unused);
 
 uint64_t ubii_node_monotonic_ms(const ubii_node *node)
 {
@@ -40,10 +47,10 @@ void ubii_config_init(ubii_config *config)
     }
     memset(config, 0, sizeof *config);
     config->client_name = "libubii";
-    config->service_timeout_ms = 5000;
-    config->ping_timeout_ms = 5000;
-    config->reconnect_min_ms = 250;
-    config->reconnect_max_ms = 8000;
+    config->service_timeout_ms = DEFAULT_SERVICE_TIMEOUT_MS;
+    config->ping_timeout_ms = DEFAULT_PING_TIMEOUT_MS;
+    config->reconnect_min_ms = DEFAULT_RECONNECT_MIN_MS;
+    config->reconnect_max_ms = DEFAULT_RECONNECT_MAX_MS;
     config->stamp_records = true;
 }
 
@@ -70,18 +77,17 @@ const char *ubii_state_name(ubii_state state)
     return "unknown";
 }
 
-static bool has_scheme(const char *url)
+static bool is_url(const char *url)
 {
-    const char *separator = strstr(url, "://");
-    return separator != NULL && separator != url;
+    ubii_url parsed;
+    return ubii_url_parse(url, &parsed) == UBII_OK;
 }
 
 ubii_status ubii_node_init(ubii_node *node, size_t node_size, const ubii_config *config,
                            ubii_port port)
 {
     if (node == NULL || node_size != sizeof(ubii_node) || config == NULL || port.vtable == NULL ||
-        config->service_url == NULL || !has_scheme(config->service_url) ||
-        (config->topic_url != NULL && !has_scheme(config->topic_url))) {
+        !is_url(config->service_url) || (config->topic_url != NULL && !is_url(config->topic_url))) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
     memset(node, 0, sizeof *node);
@@ -99,7 +105,7 @@ ubii_status ubii_node_init(ubii_node *node, size_t node_size, const ubii_config 
     node->config.topic_url = config->topic_url != NULL ? node->topic_url : NULL;
     node->config.client_name = node->client_name;
     if (node->config.service_timeout_ms == 0) {
-        node->config.service_timeout_ms = 5000;
+        node->config.service_timeout_ms = DEFAULT_SERVICE_TIMEOUT_MS;
     }
     if (node->config.reconnect_min_ms == 0) {
         node->config.reconnect_min_ms = 1;
@@ -119,7 +125,7 @@ static void announce(ubii_node *node, ubii_state previous, ubii_state current, u
     }
 }
 
-void ubii__set_state(ubii_node *node, ubii_state state, ubii_status reason)
+static void set_state(ubii_node *node, ubii_state state, ubii_status reason)
 {
     ubii_state previous = node->state;
     if (previous == state) {
@@ -136,13 +142,6 @@ void ubii__set_state(ubii_node *node, ubii_state state, ubii_status reason)
         node->deferred_states[node->deferred_state_count].current = state;
         node->deferred_states[node->deferred_state_count].reason = reason;
         node->deferred_state_count++;
-    }
-}
-
-void ubii__report(ubii_node *node, ubii_status status, const char *detail)
-{
-    if (node->config.on_error != NULL) {
-        node->config.on_error(node, status, detail, node->config.on_error_user);
     }
 }
 
@@ -164,12 +163,12 @@ static ubii_status begin_connecting(ubii_node *node)
     ubii_services_ServiceRequest request;
     memset(&request, 0, sizeof request);
     ubii__copy_string(request.topic, sizeof request.topic, UBII_SERVICE_SERVER_CONFIGURATION);
-    status = ubii__enqueue(node, &request, 0, UBII__CALL_SERVER_CONFIGURATION, NULL, NULL);
+    status = ubii__enqueue(node, &request, 0, UBII__NODE_STEP, on_server_configuration, NULL);
     if (status != UBII_OK) {
         close_channels(node);
         return status;
     }
-    ubii__set_state(node, UBII_STATE_CONNECTING, UBII_OK);
+    set_state(node, UBII_STATE_CONNECTING, UBII_OK);
     return UBII_OK;
 }
 
@@ -216,7 +215,7 @@ static void tear_down(ubii_node *node)
  * not fit the queue is reported and left out: the deregistration matters more. */
 static ubii_status enqueue_deregistration(ubii_node *node)
 {
-    ubii_status released = ubii__subscriptions_enqueue_release(node);
+    ubii_status released = ubii__subscriptions_enqueue_release(node, on_release);
     if (released != UBII_OK) {
         ubii__report(node, released, "subscriptions could not be released before deregistering");
     }
@@ -226,7 +225,7 @@ static ubii_status enqueue_deregistration(ubii_node *node)
     request.which_type = ubii_services_ServiceRequest_client_tag;
     ubii__copy_string(request.type.client.id, sizeof request.type.client.id, node->client_id);
     ubii__copy_string(request.type.client.name, sizeof request.type.client.name, node->client_name);
-    return ubii__enqueue(node, &request, 0, UBII__CALL_DEREGISTRATION, NULL, NULL);
+    return ubii__enqueue(node, &request, 0, UBII__NODE_STEP, on_deregistration, NULL);
 }
 
 /* Ends the current connection like tear_down, except that a node the master registered, whose
@@ -257,14 +256,14 @@ static void finish_stop(ubii_node *node)
 {
     tear_down(node);
     node->stop_requested = false;
-    ubii__set_state(node, UBII_STATE_STOPPED, UBII_OK);
+    set_state(node, UBII_STATE_STOPPED, UBII_OK);
 }
 
 /* Gives up for good. */
 static void fail(ubii_node *node, ubii_status reason)
 {
     leave(node);
-    ubii__set_state(node, UBII_STATE_FAILED, reason);
+    set_state(node, UBII_STATE_FAILED, reason);
 }
 
 /* The deregistration of a stop or of a failed connection was answered, failed or given up.
@@ -281,7 +280,8 @@ static void deregistration_done(ubii_node *node)
     }
 }
 
-void ubii__connection_lost(ubii_node *node, ubii_status reason)
+/* Gives up on the current connection: close everything, then reconnect after a backoff. */
+static void connection_lost(ubii_node *node, ubii_status reason)
 {
     if (node->state == UBII_STATE_STOPPING) {
         finish_stop(node);
@@ -296,47 +296,67 @@ void ubii__connection_lost(ubii_node *node, ubii_status reason)
     }
     leave(node);
     node->retry_at_ms = ubii__now(node) + backoff_ms(node);
-    ubii__set_state(node, UBII_STATE_RECONNECTING, reason);
+    set_state(node, UBII_STATE_RECONNECTING, reason);
+}
+
+/* Appends `length` bytes of `text` at *used; false when the NUL would not fit. */
+static bool append(char *destination, size_t capacity, size_t *used, const char *text,
+                   size_t length)
+{
+    if (length >= capacity - *used) {
+        return false;
+    }
+    memcpy(destination + *used, text, length);
+    *used += length;
+    destination[*used] = '\0';
+    return true;
 }
 
 /* "scheme://host:port/..." -> "tcp://host:<port>" for the topic channel. */
 static bool derive_topic_url(ubii_node *node, const char *port)
 {
-    const char *host = strstr(node->service_url, "://") + 3;
-    size_t host_length = strcspn(host, ":/");
-    size_t port_length = strlen(port);
-    if (host_length == 0 || port_length == 0 ||
-        6 + host_length + 1 + port_length + 1 > sizeof node->topic_url) {
+    ubii_url service;
+    if (ubii_url_parse(node->service_url, &service) != UBII_OK || port[0] == '\0') {
         return false;
     }
-    memcpy(node->topic_url, "tcp://", 6);
-    memcpy(node->topic_url + 6, host, host_length);
-    node->topic_url[6 + host_length] = ':';
-    memcpy(node->topic_url + 7 + host_length, port, port_length + 1);
-    return true;
+    bool ipv6 = memchr(service.host, ':', service.host_length) != NULL;
+    char *url = node->topic_url;
+    size_t capacity = sizeof node->topic_url;
+    size_t used = 0;
+    bool fits = append(url, capacity, &used, "tcp://", 6) &&
+                append(url, capacity, &used, "[", ipv6 ? 1 : 0) &&
+                append(url, capacity, &used, service.host, service.host_length) &&
+                append(url, capacity, &used, "]", ipv6 ? 1 : 0) &&
+                append(url, capacity, &used, ":", 1) &&
+                append(url, capacity, &used, port, strlen(port));
+    return fits && is_url(url);
 }
 
-static void on_server_configuration(ubii_node *node, const ubii_reply *reply)
+static void on_server_configuration(ubii_node *node, const ubii_reply *reply, void *unused)
 {
+    (void)unused;
+    if (node->state != UBII_STATE_CONNECTING) {
+        return;
+    }
     ubii_servers_Server server;
     memset(&server, 0, sizeof server);
     ubii_status status = ubii_reply_decode(reply, ubii_services_ServiceReply_server_tag,
                                            ubii_servers_Server_fields, &server);
     if (status != UBII_OK && status != UBII_ERR_TOO_LARGE) {
         ubii__report(node, status, "server configuration failed");
-        ubii__connection_lost(node, status);
+        connection_lost(node, status);
         return;
     }
     if (status == UBII_ERR_TOO_LARGE && node->config.topic_url == NULL) {
         /* A small port cannot take the configuration (its constants make it ~6.5 kB); only a
          * configured topic URL lets the node go on without it. */
         ubii__report(node, status, "server configuration too large for the port; set topic_url");
-        ubii__connection_lost(node, status);
+        connection_lost(node, status);
         return;
     }
     if (node->config.topic_url == NULL && !derive_topic_url(node, server.port_topic_data_zmq)) {
         ubii__report(node, UBII_ERR_UNEXPECTED_REPLY, "the master reported no topic data port");
-        ubii__connection_lost(node, UBII_ERR_UNEXPECTED_REPLY);
+        connection_lost(node, UBII_ERR_UNEXPECTED_REPLY);
         return;
     }
     ubii_services_ServiceRequest request;
@@ -348,18 +368,22 @@ static void on_server_configuration(ubii_node *node, const ubii_reply *reply)
     if (node->complete_registration != NULL) {
         node->complete_registration(node, &request.type.client);
     }
-    status = ubii__enqueue(node, &request, 0, UBII__CALL_REGISTRATION, NULL, NULL);
+    status = ubii__enqueue(node, &request, 0, UBII__NODE_STEP, on_registration, NULL);
     if (status != UBII_OK) {
         /* TOO_LARGE: the offered processing modules (ubii/processing.h) overfill the queue. */
         ubii__report(node, status, "cannot queue the registration request");
-        ubii__connection_lost(node, status);
+        connection_lost(node, status);
         return;
     }
-    ubii__set_state(node, UBII_STATE_REGISTERING, UBII_OK);
+    set_state(node, UBII_STATE_REGISTERING, UBII_OK);
 }
 
-static void on_registration(ubii_node *node, const ubii_reply *reply)
+static void on_registration(ubii_node *node, const ubii_reply *reply, void *unused)
 {
+    (void)unused;
+    if (node->state != UBII_STATE_REGISTERING) {
+        return;
+    }
     ubii_clients_Client client;
     memset(&client, 0, sizeof client);
     ubii_status status = ubii_reply_decode(reply, ubii_services_ServiceReply_client_tag,
@@ -370,10 +394,15 @@ static void on_registration(ubii_node *node, const ubii_reply *reply)
     if (status != UBII_OK) {
         ubii__report(node, status,
                      reply->error_message[0] ? reply->error_message : "registration failed");
-        ubii__connection_lost(node, status);
+        connection_lost(node, status);
         return;
     }
-    ubii__copy_string(node->client_id, sizeof node->client_id, client.id);
+    if (!ubii__copy_string(node->client_id, sizeof node->client_id, client.id)) {
+        ubii__report(node, UBII_ERR_UNEXPECTED_REPLY,
+                     "the master's client id is longer than UBII_MAX_CLIENT_ID_SIZE");
+        fail(node, UBII_ERR_UNEXPECTED_REPLY);
+        return;
+    }
     status = node->port.vtable->open(node->port.context, UBII_CHANNEL_TOPIC, node->topic_url,
                                      node->client_id);
     if (status == UBII_ERR_UNSUPPORTED || status == UBII_ERR_INVALID_ARGUMENT) {
@@ -384,49 +413,34 @@ static void on_registration(ubii_node *node, const ubii_reply *reply)
     }
     if (status != UBII_OK) {
         ubii__report(node, status, "cannot open the topic data connection");
-        ubii__connection_lost(node, status);
+        connection_lost(node, status);
         return;
     }
     node->open_deadline_ms = ubii__now(node) + node->config.service_timeout_ms;
-    ubii__set_state(node, UBII_STATE_OPENING, UBII_OK);
+    set_state(node, UBII_STATE_OPENING, UBII_OK);
 }
 
-void ubii__on_step_reply(ubii_node *node, uint8_t purpose, const ubii_reply *reply)
+static void on_release(ubii_node *node, const ubii_reply *reply, void *unused)
 {
-    switch (purpose) {
-    case UBII__CALL_SERVER_CONFIGURATION:
-        if (node->state == UBII_STATE_CONNECTING) {
-            on_server_configuration(node, reply);
-        }
-        break;
-    case UBII__CALL_REGISTRATION:
-        if (node->state == UBII_STATE_REGISTERING) {
-            on_registration(node, reply);
-        }
-        break;
-    case UBII__CALL_SUBSCRIPTION:
-        ubii__subscriptions_on_reply(node, reply);
-        break;
-    case UBII__CALL_RELEASE:
-        if (reply->status != UBII_OK && reply->status != UBII_ERR_CANCELLED) {
-            ubii__report(node, reply->status, "releasing the subscriptions failed");
-        }
-        if (reply->status == UBII_ERR_TIMEOUT &&
-            (node->leaving || node->state == UBII_STATE_STOPPING)) {
-            /* A master that does not answer will not answer the deregistration either: leaving
-             * stays bounded by one service timeout. */
-            deregistration_done(node);
-        }
-        break;
-    case UBII__CALL_DEREGISTRATION:
-        if (reply->status != UBII_OK && reply->status != UBII_ERR_CANCELLED) {
-            ubii__report(node, reply->status, "deregistration failed");
-        }
-        deregistration_done(node);
-        break;
-    default:
-        break;
+    (void)unused;
+    if (reply->status != UBII_OK && reply->status != UBII_ERR_CANCELLED) {
+        ubii__report(node, reply->status, "releasing the subscriptions failed");
     }
+    if (reply->status == UBII_ERR_TIMEOUT &&
+        (node->leaving || node->state == UBII_STATE_STOPPING)) {
+        /* A master that does not answer will not answer the deregistration either: leaving
+         * stays bounded by one service timeout. */
+        deregistration_done(node);
+    }
+}
+
+static void on_deregistration(ubii_node *node, const ubii_reply *reply, void *unused)
+{
+    (void)unused;
+    if (reply->status != UBII_OK && reply->status != UBII_ERR_CANCELLED) {
+        ubii__report(node, reply->status, "deregistration failed");
+    }
+    deregistration_done(node);
 }
 
 static void begin_stopping(ubii_node *node)
@@ -436,7 +450,7 @@ static void begin_stopping(ubii_node *node)
         return;
     }
     if (node->leaving) {
-        ubii__set_state(node, UBII_STATE_STOPPING, UBII_OK); /* its deregistration is under way */
+        set_state(node, UBII_STATE_STOPPING, UBII_OK); /* its deregistration is under way */
         return;
     }
     bool registered = node->state == UBII_STATE_OPENING || node->state == UBII_STATE_READY;
@@ -449,7 +463,7 @@ static void begin_stopping(ubii_node *node)
         finish_stop(node);
         return;
     }
-    ubii__set_state(node, UBII_STATE_STOPPING, UBII_OK);
+    set_state(node, UBII_STATE_STOPPING, UBII_OK);
 }
 
 ubii_status ubii_node_stop(ubii_node *node)
@@ -467,9 +481,9 @@ static void answer_ping(ubii_node *node, unsigned flags)
 {
     uint8_t *buffer = NULL;
     ubii_status status = node->port.vtable->send_begin(node->port.context, UBII_CHANNEL_TOPIC,
-                                                       UBII__KEEPALIVE_SIZE, &buffer);
+                                                       KEEPALIVE_SIZE, &buffer);
     if (status == UBII_OK) {
-        memcpy(buffer, UBII__PONG, UBII__KEEPALIVE_SIZE);
+        memcpy(buffer, keepalive_pong, KEEPALIVE_SIZE);
         status = node->port.vtable->send_commit(node->port.context, UBII_CHANNEL_TOPIC, flags);
     }
     if (status != UBII_OK) {
@@ -503,8 +517,7 @@ static void receive_topic_data(ubii_node *node)
         if (status == UBII_ERR_TOO_LARGE) {
             node->stats.decode_errors++;
             ubii__report(node, status, "topic data over the port's size limit was dropped");
-        } else if (size == UBII__KEEPALIVE_SIZE &&
-                   memcmp(data, UBII__PING, UBII__KEEPALIVE_SIZE) == 0) {
+        } else if (size == KEEPALIVE_SIZE && memcmp(data, keepalive_ping, KEEPALIVE_SIZE) == 0) {
             answer_ping(node, flags);
         } else if (node->state == UBII_STATE_READY) {
             ubii__handle_topic_data(node, data, size);
@@ -521,7 +534,7 @@ static void check_channels(ubii_node *node, uint64_t now)
     }
     void *port = node->port.context;
     if (node->port.vtable->state(port, UBII_CHANNEL_SERVICE) == UBII_CHANNEL_LOST) {
-        ubii__connection_lost(node, UBII_ERR_TRANSPORT);
+        connection_lost(node, UBII_ERR_TRANSPORT);
         return;
     }
     if (state != UBII_STATE_OPENING && state != UBII_STATE_READY) {
@@ -529,14 +542,14 @@ static void check_channels(ubii_node *node, uint64_t now)
     }
     ubii_channel_state topic = node->port.vtable->state(port, UBII_CHANNEL_TOPIC);
     if (topic == UBII_CHANNEL_LOST) {
-        ubii__connection_lost(node, UBII_ERR_TRANSPORT);
+        connection_lost(node, UBII_ERR_TRANSPORT);
     } else if (state == UBII_STATE_OPENING && topic == UBII_CHANNEL_OPEN) {
         node->reconnect_attempts = 0;
-        ubii__set_state(node, UBII_STATE_READY, UBII_OK);
+        set_state(node, UBII_STATE_READY, UBII_OK);
         node->subscriptions_dirty = true;
     } else if (state == UBII_STATE_OPENING && now >= node->open_deadline_ms) {
         ubii__report(node, UBII_ERR_TIMEOUT, "the topic data connection did not open");
-        ubii__connection_lost(node, UBII_ERR_TIMEOUT);
+        connection_lost(node, UBII_ERR_TIMEOUT);
     }
 }
 
@@ -561,12 +574,12 @@ static void step(ubii_node *node)
     if (node->state == UBII_STATE_READY && node->ping_seen && node->config.ping_timeout_ms != 0 &&
         now - node->last_ping_ms > node->config.ping_timeout_ms) {
         ubii__report(node, UBII_ERR_TIMEOUT, "no PING from the master");
-        ubii__connection_lost(node, UBII_ERR_TIMEOUT);
+        connection_lost(node, UBII_ERR_TIMEOUT);
     }
     if (node->state == UBII_STATE_RECONNECTING && !node->leaving && now >= node->retry_at_ms) {
         ubii_status status = begin_connecting(node);
         if (status != UBII_OK) {
-            ubii__connection_lost(node, status);
+            connection_lost(node, status);
         }
     }
     if (node->state == UBII_STATE_READY) {
@@ -610,7 +623,7 @@ int ubii_node_next_timeout_ms(ubii_node *node)
         return 0;
     }
     uint64_t wait = deadline - now;
-    return wait > 0x7fffffff ? 0x7fffffff : (int)wait;
+    return wait > LONGEST_WAIT_MS ? LONGEST_WAIT_MS : (int)wait;
 }
 
 ubii_status ubii_node_poll(ubii_node *node, int timeout_ms)
@@ -633,7 +646,8 @@ ubii_status ubii_node_poll(ubii_node *node, int timeout_ms)
     if (due >= 0 && (wait < 0 || due < wait)) {
         wait = due;
     }
-    ubii_status status = node->port.vtable->wait(node->port.context, wait < 0 ? 0x7fffffff : wait);
+    ubii_status status =
+        node->port.vtable->wait(node->port.context, wait < 0 ? LONGEST_WAIT_MS : wait);
     step(node);
     node->in_poll = false;
     return status == UBII_ERR_WOULD_BLOCK || status == UBII_ERR_TIMEOUT ? UBII_OK : status;

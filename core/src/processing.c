@@ -1,7 +1,7 @@
 /* Offering processing modules at registration (ubii/processing.h; full schema only). */
 #include <pb_encode.h>
 
-#include "node_internal.h"
+#include "ubii/service.h"
 #include "ubii/processing.h"
 
 /* Writes each offered spec as one Client.processing_modules element: the bytes are a serialized

@@ -4,7 +4,8 @@
 
 #include <pb_encode.h>
 
-#include "node_internal.h"
+#include "publish.h"
+#include "record.h"
 #include "ubii/topicData/timestamp.pb.h"
 
 enum { TOPIC_DATA_RECORD = 2, RECORD_TOPIC = 1, RECORD_TIMESTAMP = 2, LIST_ELEMENTS = 1 };
@@ -64,6 +65,9 @@ ubii_status ubii__publish(ubii_node *node, const char *topic, uint32_t member,
     }
     size_t record_size = sizing.bytes_written;
     size_t total = 1 + varint_size(record_size) + record_size;
+    if (total > UBII_MAX_MESSAGE_SIZE) {
+        return UBII_ERR_TOO_LARGE; /* a port with a larger limit would send what no peer takes */
+    }
 
     uint8_t *buffer = NULL;
     ubii_status status =

@@ -4,7 +4,9 @@
 
 #include <pb_decode.h>
 
-#include "node_internal.h"
+#include "node_events.h"
+#include "record.h"
+#include "subscriptions.h"
 #include "ubii/general/error.pb.h"
 #include "ubii/topicData/timestamp.pb.h"
 #include "ubii/wire.h"

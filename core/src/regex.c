@@ -9,7 +9,8 @@
  * matches unless a counted quantifier spans such characters. */
 #include <string.h>
 
-#include "node_internal.h"
+#include "regex_match.h"
+#include "ubii/topic.h"
 
 enum op {
     OP_CHAR,

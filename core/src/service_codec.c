@@ -1,3 +1,5 @@
+/* ServiceRequest and ServiceReply bytes: the node's own reply parsing, and the codec helpers of
+ * ubii/service_codec.h for programs that carry the bytes themselves. */
 #include "ubii/service_codec.h"
 
 #include <string.h>
@@ -5,8 +7,134 @@
 #include <pb_decode.h>
 #include <pb_encode.h>
 
-#include "node_internal.h"
+#include "reply_parse.h"
+#include "ubii/wire.h"
 #include "ubii/services/serviceRequest.pb.h"
+#include "wire_scan.h"
+
+static const char empty_text[] = "";
+
+void ubii__reply_with_status(ubii_reply *reply, ubii_status status)
+{
+    memset(reply, 0, sizeof *reply);
+    reply->status = status;
+    reply->error_title = empty_text;
+    reply->error_message = empty_text;
+}
+
+void ubii__parse_reply(const uint8_t *bytes, size_t size, ubii_reply *reply,
+                       ubii_general_Error *error_storage)
+{
+    ubii__reply_with_status(reply, UBII_OK);
+
+    ubii_wire_scan scan;
+    ubii_wire_field field;
+    bool malformed = false;
+    bool found = false;
+    ubii_wire_scan_init(&scan, bytes, size);
+    while (ubii_wire_scan_next(&scan, &field, &malformed)) {
+        /* Every ServiceReply member is a message; protobuf lets the last one win. */
+        if (field.wire_type == PB_WT_STRING) {
+            reply->member = field.number;
+            reply->bytes = field.bytes;
+            reply->size = field.size;
+            found = true;
+        }
+    }
+    if (malformed) {
+        reply->status = UBII_ERR_DECODE;
+        return;
+    }
+    if (!found) {
+        reply->status = UBII_ERR_UNEXPECTED_REPLY;
+        return;
+    }
+    if (reply->member == ubii_services_ServiceReply_error_tag) {
+        ubii_general_Error error;
+        memset(&error, 0, sizeof error);
+        pb_istream_t stream = pb_istream_from_buffer(reply->bytes, reply->size);
+        if (!pb_decode(&stream, ubii_general_Error_fields, &error)) {
+            reply->status = UBII_ERR_DECODE;
+            return;
+        }
+        *error_storage = error;
+        reply->error_title = error_storage->title;
+        reply->error_message = error_storage->message;
+        reply->status = UBII_ERR_BROKER;
+    }
+}
+
+ubii_status ubii_reply_decode(const ubii_reply *reply, uint32_t expected_member,
+                              const pb_msgdesc_t *fields, void *message)
+{
+    if (reply == NULL || fields == NULL || message == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    if (reply->status != UBII_OK) {
+        return reply->status;
+    }
+    if (reply->member != expected_member) {
+        return UBII_ERR_WRONG_TYPE;
+    }
+    pb_istream_t stream = pb_istream_from_buffer(reply->bytes, reply->size);
+    return pb_decode(&stream, fields, message) ? UBII_OK : UBII_ERR_DECODE;
+}
+
+enum { LIST_ELEMENTS = 1 }; /* every list message of the schema repeats its field 1 */
+
+static ubii_status occurrences(const ubii_reply *reply, uint32_t expected_member, uint32_t field,
+                               ubii_field_iter *it)
+{
+    if (reply->status != UBII_OK) {
+        return reply->status;
+    }
+    if (reply->member != expected_member) {
+        return UBII_ERR_WRONG_TYPE;
+    }
+    ubii_field_iter_init(it, reply->bytes, reply->size, field);
+    return UBII_OK;
+}
+
+ubii_status ubii_reply_for_each(const ubii_reply *reply, uint32_t expected_member,
+                                uint32_t repeated_field, const pb_msgdesc_t *fields, void *element,
+                                ubii_element_fn fn, void *user)
+{
+    if (reply == NULL || repeated_field == 0 || fields == NULL || element == NULL || fn == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    ubii_field_iter it;
+    ubii_status status = occurrences(reply, expected_member, repeated_field, &it);
+    const uint8_t *bytes;
+    size_t size;
+    while (status == UBII_OK && ubii_field_iter_next(&it, &bytes, &size)) {
+        pb_istream_t stream = pb_istream_from_buffer(bytes, size);
+        if (!pb_decode(&stream, fields, element)) {
+            return UBII_ERR_DECODE;
+        }
+        if (!fn(element, user)) {
+            return UBII_OK;
+        }
+    }
+    return status == UBII_OK && it.malformed ? UBII_ERR_DECODE : status;
+}
+
+ubii_status ubii_reply_for_each_string(const ubii_reply *reply, uint32_t expected_member,
+                                       ubii_text_fn fn, void *user)
+{
+    if (reply == NULL || fn == NULL) {
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    ubii_field_iter it;
+    ubii_status status = occurrences(reply, expected_member, LIST_ELEMENTS, &it);
+    const uint8_t *text;
+    size_t length;
+    while (status == UBII_OK && ubii_field_iter_next(&it, &text, &length)) {
+        if (!fn((const char *)text, length, user)) {
+            return UBII_OK;
+        }
+    }
+    return status == UBII_OK && it.malformed ? UBII_ERR_DECODE : status;
+}
 
 ubii_status ubii_encode_topic_request(const char *topic, uint8_t *buffer, size_t capacity,
                                       size_t *length)

@@ -5,75 +5,17 @@
 #include <pb_decode.h>
 #include <pb_encode.h>
 
-#include "node_internal.h"
+#include "copy_string.h"
+#include "node_events.h"
+#include "reply_parse.h"
+#include "service_queue.h"
 #include "wire_scan.h"
-
-static const char empty_text[] = "";
-
-void ubii__parse_reply(const uint8_t *bytes, size_t size, ubii_reply *reply,
-                       ubii_general_Error *error_storage)
-{
-    memset(reply, 0, sizeof *reply);
-    reply->error_title = empty_text;
-    reply->error_message = empty_text;
-
-    ubii_wire_scan scan;
-    ubii_wire_field field;
-    bool malformed = false;
-    bool found = false;
-    ubii_wire_scan_init(&scan, bytes, size);
-    while (ubii_wire_scan_next(&scan, &field, &malformed)) {
-        /* Every ServiceReply member is a message; protobuf lets the last one win. */
-        if (field.wire_type == PB_WT_STRING) {
-            reply->member = field.number;
-            reply->bytes = field.bytes;
-            reply->size = field.size;
-            found = true;
-        }
-    }
-    if (malformed) {
-        reply->status = UBII_ERR_DECODE;
-        return;
-    }
-    if (!found) {
-        reply->status = UBII_ERR_UNEXPECTED_REPLY;
-        return;
-    }
-    if (reply->member == ubii_services_ServiceReply_error_tag) {
-        ubii_general_Error error;
-        memset(&error, 0, sizeof error);
-        pb_istream_t stream = pb_istream_from_buffer(reply->bytes, reply->size);
-        if (!pb_decode(&stream, ubii_general_Error_fields, &error)) {
-            reply->status = UBII_ERR_DECODE;
-            return;
-        }
-        *error_storage = error;
-        reply->error_title = error_storage->title;
-        reply->error_message = error_storage->message;
-        reply->status = UBII_ERR_BROKER;
-    }
-}
-
-ubii_status ubii_reply_decode(const ubii_reply *reply, uint32_t expected_member,
-                              const pb_msgdesc_t *fields, void *message)
-{
-    if (reply == NULL || fields == NULL || message == NULL) {
-        return UBII_ERR_INVALID_ARGUMENT;
-    }
-    if (reply->status != UBII_OK) {
-        return reply->status;
-    }
-    if (reply->member != expected_member) {
-        return UBII_ERR_WRONG_TYPE;
-    }
-    pb_istream_t stream = pb_istream_from_buffer(reply->bytes, reply->size);
-    return pb_decode(&stream, fields, message) ? UBII_OK : UBII_ERR_DECODE;
-}
 
 /* Reserves the queue room for a request of `size` bytes and its call entry; *bytes receives where
  * the encoded request goes. */
-static ubii_status reserve_call(ubii_node *node, size_t size, uint32_t timeout_ms, uint8_t purpose,
-                                ubii__callback fn, void *user, uint8_t **bytes)
+static ubii_status reserve_call(ubii_node *node, size_t size, uint32_t timeout_ms,
+                                enum ubii__call_owner owner, ubii_reply_fn fn, void *user,
+                                uint8_t **bytes)
 {
     if (node->call_count == UBII_SERVICE_QUEUE_DEPTH) {
         return UBII_ERR_FULL;
@@ -89,9 +31,9 @@ static ubii_status reserve_call(ubii_node *node, size_t size, uint32_t timeout_m
     call->offset = node->queue_used;
     call->size = (uint32_t)size;
     call->timeout_ms = timeout_ms != 0 ? timeout_ms : node->config.service_timeout_ms;
-    call->fn = fn;
+    call->fn = (ubii__callback)fn;
     call->user = user;
-    call->purpose = purpose;
+    call->node_step = owner == UBII__NODE_STEP;
     return UBII_OK;
 }
 
@@ -103,14 +45,15 @@ static void commit_call(ubii_node *node)
 }
 
 ubii_status ubii__enqueue(ubii_node *node, const ubii_services_ServiceRequest *request,
-                          uint32_t timeout_ms, uint8_t purpose, ubii__callback fn, void *user)
+                          uint32_t timeout_ms, enum ubii__call_owner owner, ubii_reply_fn fn,
+                          void *user)
 {
     size_t size = 0;
     if (!pb_get_encoded_size(&size, ubii_services_ServiceRequest_fields, request)) {
         return UBII_ERR_ENCODE;
     }
     uint8_t *bytes = NULL;
-    ubii_status status = reserve_call(node, size, timeout_ms, purpose, fn, user, &bytes);
+    ubii_status status = reserve_call(node, size, timeout_ms, owner, fn, user, &bytes);
     if (status != UBII_OK) {
         return status;
     }
@@ -138,9 +81,7 @@ static ubii__call pop_head(ubii_node *node)
 
 static void deliver(ubii_node *node, const ubii__call *call, const ubii_reply *reply)
 {
-    if (call->purpose != UBII__CALL_APPLICATION) {
-        ubii__on_step_reply(node, call->purpose, reply);
-    } else if (call->fn != NULL) {
+    if (call->fn != NULL) {
         ((ubii_reply_fn)call->fn)(node, reply, call->user);
     }
 }
@@ -169,13 +110,10 @@ void ubii__cancel_calls(ubii_node *node, ubii_status status)
     node->subscription_call_pending = false;
 
     ubii_reply reply;
-    memset(&reply, 0, sizeof reply);
-    reply.status = status;
-    reply.error_title = empty_text;
-    reply.error_message = empty_text;
+    ubii__reply_with_status(&reply, status);
     for (uint32_t i = 0; i < count; ++i) {
-        if (cancelled[i].purpose == UBII__CALL_APPLICATION && cancelled[i].fn != NULL) {
-            ((ubii_reply_fn)cancelled[i].fn)(node, &reply, cancelled[i].user);
+        if (!cancelled[i].node_step) {
+            deliver(node, &cancelled[i], &reply);
         }
     }
 }
@@ -223,10 +161,7 @@ void ubii__service_step(ubii_node *node)
             if (received == UBII_OK) {
                 ubii__parse_reply(data, size, &reply, &error_storage);
             } else { /* the port dropped a reply over its size limit */
-                memset(&reply, 0, sizeof reply);
-                reply.status = UBII_ERR_TOO_LARGE;
-                reply.error_title = empty_text;
-                reply.error_message = empty_text;
+                ubii__reply_with_status(&reply, UBII_ERR_TOO_LARGE);
             }
             if (reply.status == UBII_ERR_DECODE || reply.status == UBII_ERR_TOO_LARGE) {
                 node->stats.decode_errors++;
@@ -241,10 +176,7 @@ void ubii__service_step(ubii_node *node)
         node->stats.service_timeouts++;
         ubii__call call = pop_head(node);
         reset_service_channel(node);
-        memset(&reply, 0, sizeof reply);
-        reply.status = UBII_ERR_TIMEOUT;
-        reply.error_title = empty_text;
-        reply.error_message = empty_text;
+        ubii__reply_with_status(&reply, UBII_ERR_TIMEOUT);
         deliver(node, &call, &reply);
     }
 }
@@ -260,8 +192,7 @@ ubii_status ubii_call(ubii_node *node, const ubii_services_ServiceRequest *reque
     if (node->state != UBII_STATE_READY) {
         return UBII_ERR_NOT_CONNECTED;
     }
-    return ubii__enqueue(node, request, timeout_ms, UBII__CALL_APPLICATION, (ubii__callback)fn,
-                         user);
+    return ubii__enqueue(node, request, timeout_ms, UBII__APPLICATION_CALL, fn, user);
 }
 
 ubii_status ubii_call_topic(ubii_node *node, const char *topic, uint32_t timeout_ms,
@@ -305,8 +236,8 @@ ubii_status ubii_call_encoded(ubii_node *node, const uint8_t *request, size_t si
         return UBII_ERR_NOT_CONNECTED;
     }
     uint8_t *bytes = NULL;
-    ubii_status status = reserve_call(node, size, timeout_ms, UBII__CALL_APPLICATION,
-                                      (ubii__callback)fn, user, &bytes);
+    ubii_status status =
+        reserve_call(node, size, timeout_ms, UBII__APPLICATION_CALL, fn, user, &bytes);
     if (status != UBII_OK) {
         return status;
     }

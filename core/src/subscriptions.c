@@ -8,7 +8,11 @@
 
 #include <pb_encode.h>
 
-#include "node_internal.h"
+#include "copy_string.h"
+#include "node_events.h"
+#include "regex_match.h"
+#include "service_queue.h"
+#include "subscriptions.h"
 
 enum { HANDLE_INDEX_BITS = 8, GENERATION_MASK = 0xffffff };
 
@@ -198,7 +202,8 @@ static bool select_changes(ubii_node *node)
 
 /* Queues a TopicSubscription request whose four lists are chosen by `releasing`: the marked
  * changes, or the release of everything the master holds. */
-static ubii_status enqueue_subscription_request(ubii_node *node, bool releasing, uint8_t purpose)
+static ubii_status enqueue_subscription_request(ubii_node *node, bool releasing,
+                                                ubii_reply_fn on_reply)
 {
     list_selection lists[4] = {{node, UBII__EXACT, true, releasing},
                                {node, UBII__EXACT, false, releasing},
@@ -217,17 +222,17 @@ static ubii_status enqueue_subscription_request(ubii_node *node, bool releasing,
         fields[i]->funcs.encode = encode_selected;
         fields[i]->arg = &lists[i];
     }
-    return ubii__enqueue(node, &request, 0, purpose, NULL, NULL);
+    return ubii__enqueue(node, &request, 0, UBII__NODE_STEP, on_reply, NULL);
 }
 
-/* Neither master releases a client's subscriptions when it deregisters (PROTOCOL.md 2.8): it
- * would go on forwarding their data to the old id, and the npm 0.4.0 master gets slower with
+/* Neither master releases a client's subscriptions when it deregisters (docs/PROTOCOL.md §2.8):
+ * it would go on forwarding their data to the old id, and the npm 0.4.0 master gets slower with
  * every client that left that way. */
-ubii_status ubii__subscriptions_enqueue_release(ubii_node *node)
+ubii_status ubii__subscriptions_enqueue_release(ubii_node *node, ubii_reply_fn on_reply)
 {
     for (size_t i = 0; i < UBII_MAX_SUBSCRIPTIONS; ++i) {
         if (node->subscriptions[i].kind != UBII__FREE && node->subscriptions[i].at_master) {
-            return enqueue_subscription_request(node, true, UBII__CALL_RELEASE);
+            return enqueue_subscription_request(node, true, on_reply);
         }
     }
     return UBII_OK;
@@ -250,38 +255,9 @@ bool ubii_subscriptions_pending(const ubii_node *node)
     return false;
 }
 
-void ubii__subscriptions_sync(ubii_node *node)
+static void on_subscription_reply(ubii_node *node, const ubii_reply *reply, void *unused)
 {
-    if (!node->subscriptions_dirty || node->subscription_call_pending) {
-        return;
-    }
-    node->subscriptions_dirty = false;
-    if (!select_changes(node)) {
-        return;
-    }
-    ubii_status status = enqueue_subscription_request(node, false, UBII__CALL_SUBSCRIPTION);
-    if (status != UBII_OK) {
-        /* Undo the marks; a full queue is retried at the next step. */
-        for (size_t i = 0; i < UBII_MAX_SUBSCRIPTIONS; ++i) {
-            ubii__subscription *slot = &node->subscriptions[i];
-            if (slot->in_flight) {
-                slot->in_flight = 0;
-                if (slot->active) {
-                    slot->at_master = 0;
-                }
-            }
-        }
-        node->subscriptions_dirty = status == UBII_ERR_FULL;
-        if (status != UBII_ERR_FULL) {
-            ubii__report(node, status, "subscription request could not be encoded");
-        }
-        return;
-    }
-    node->subscription_call_pending = true;
-}
-
-void ubii__subscriptions_on_reply(ubii_node *node, const ubii_reply *reply)
-{
+    (void)unused;
     node->subscription_call_pending = false;
     bool succeeded =
         reply->status == UBII_OK && reply->member == ubii_services_ServiceReply_success_tag;
@@ -307,6 +283,36 @@ void ubii__subscriptions_on_reply(ubii_node *node, const ubii_reply *reply)
     node->subscriptions_dirty = true;
 }
 
+void ubii__subscriptions_sync(ubii_node *node)
+{
+    if (!node->subscriptions_dirty || node->subscription_call_pending) {
+        return;
+    }
+    node->subscriptions_dirty = false;
+    if (!select_changes(node)) {
+        return;
+    }
+    ubii_status status = enqueue_subscription_request(node, false, on_subscription_reply);
+    if (status != UBII_OK) {
+        /* Undo the marks; a full queue is retried at the next step. */
+        for (size_t i = 0; i < UBII_MAX_SUBSCRIPTIONS; ++i) {
+            ubii__subscription *slot = &node->subscriptions[i];
+            if (slot->in_flight) {
+                slot->in_flight = 0;
+                if (slot->active) {
+                    slot->at_master = 0;
+                }
+            }
+        }
+        node->subscriptions_dirty = status == UBII_ERR_FULL;
+        if (status != UBII_ERR_FULL) {
+            ubii__report(node, status, "subscription request could not be encoded");
+        }
+        return;
+    }
+    node->subscription_call_pending = true;
+}
+
 /* ---- dispatch -------------------------------------------------------------------------------- */
 
 static bool matches(const ubii__subscription *slot, const char *topic)
@@ -329,15 +335,8 @@ static uint64_t fnv1a(const uint8_t *bytes, size_t size)
 /* The master sends a record once per subscription of this client that matches its topic, one copy
  * right after the other. With k such subscriptions, k identical messages in a row are one record.
  */
-static bool is_duplicate(ubii_node *node, const char *topic, const uint8_t *message, size_t size)
+static bool is_duplicate(ubii_node *node, uint32_t copies, const uint8_t *message, size_t size)
 {
-    uint32_t copies = 0;
-    for (size_t i = 0; i < UBII_MAX_SUBSCRIPTIONS; ++i) {
-        const ubii__subscription *slot = &node->subscriptions[i];
-        if (slot->kind != UBII__FREE && slot->at_master && matches(slot, topic)) {
-            copies++;
-        }
-    }
     uint64_t hash = fnv1a(message, size);
     bool duplicate =
         copies > 1 && hash == node->last_record_hash && node->duplicate_run + 1 < copies;
@@ -349,14 +348,27 @@ static bool is_duplicate(ubii_node *node, const char *topic, const uint8_t *mess
 void ubii__dispatch_record(ubii_node *node, const ubii_record *record, const uint8_t *message,
                            size_t size)
 {
-    if (is_duplicate(node, record->topic, message, size)) {
+    /* Each pattern is matched once per record: the generation a slot matched with, 0 for none.
+     * A callback may unsubscribe and subscribe; a slot taken anew has another generation. */
+    uint32_t matched_generation[UBII_MAX_SUBSCRIPTIONS];
+    uint32_t copies = 0;
+    for (size_t i = 0; i < UBII_MAX_SUBSCRIPTIONS; ++i) {
+        const ubii__subscription *slot = &node->subscriptions[i];
+        bool relevant = slot->kind != UBII__FREE && (slot->at_master || slot->active);
+        matched_generation[i] = relevant && matches(slot, record->topic) ? slot->generation : 0;
+        if (matched_generation[i] != 0 && slot->at_master) {
+            copies++;
+        }
+    }
+    if (is_duplicate(node, copies, message, size)) {
         node->stats.duplicates_dropped++;
         return;
     }
     node->stats.records_received++;
     for (size_t i = 0; i < UBII_MAX_SUBSCRIPTIONS && node->state == UBII_STATE_READY; ++i) {
         ubii__subscription *slot = &node->subscriptions[i];
-        if (slot->kind != UBII__FREE && slot->active && matches(slot, record->topic)) {
+        if (slot->kind != UBII__FREE && slot->active && matched_generation[i] != 0 &&
+            slot->generation == matched_generation[i]) {
             ((ubii_record_fn)slot->fn)(node, record, slot->user);
         }
     }

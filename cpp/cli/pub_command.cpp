@@ -3,11 +3,13 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <string>
 
 #include "cli_error.hpp"
 #include "commands.hpp"
 #include "image_file.hpp"
 #include "record_input.hpp"
+#include "ubii/config.h"
 
 namespace ubii::cli
 {
@@ -56,8 +58,10 @@ int publish(Context &context, const PubOptions &options)
         }
         const ubii::Status status = node.try_publish(record);
         if (status == ubii::Status::too_large)
-            throw CliError(exit_usage, "the record on " + options.topic + " is larger than the " +
-                                           "largest message the node sends");
+            throw CliError(exit_usage, "the record on " + options.topic +
+                                           " is larger than the largest message a node sends (" +
+                                           std::to_string(UBII_MAX_MESSAGE_SIZE >> 20) +
+                                           " MiB, UBII_MAX_MESSAGE_SIZE)");
         if (status != ubii::Status::ok)
             throw CliError(status == ubii::Status::not_connected ? exit_no_master : exit_usage,
                            "cannot publish on " + options.topic + ": " + ubii::describe(status));

@@ -320,8 +320,8 @@ ServiceRequest SessionHost::report_request(const char *service, const std::vecto
 }
 
 // runtime/add and runtime/remove: only `id` and `node_id` count at the master, which verifies
-// them against the session it started (SESSIONS.md 1.2). A refusal leaves the modules as they
-// are (a late confirmation can still make the session RUNNING) and is reported.
+// them against the session it started (docs/PROTOCOL.md §5.2). A refusal leaves the modules as
+// they are (a late confirmation can still make the session RUNNING) and is reported.
 void SessionHost::send_report(const ServiceRequest &request, SessionEvent::Kind confirmed)
 {
     const std::vector<ProcessingModuleSpec> reported(

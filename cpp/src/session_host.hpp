@@ -1,9 +1,9 @@
 #ifndef UBII_CPP_SESSION_HOST_HPP
 #define UBII_CPP_SESSION_HOST_HPP
 
-// A node's part in sessions (SESSIONS.md §1): it offers the registry's modules at registration,
-// runs the modules a start record assigns to its client id, wired by the session's IO mappings,
-// reports them to the master, and stops them when the session stops.
+// A node's part in sessions (docs/PROTOCOL.md §5): it offers the registry's modules at
+// registration, runs the modules a start record assigns to its client id, wired by the session's
+// IO mappings, reports them to the master, and stops them when the session stops.
 
 #include <cstdint>
 #include <functional>

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the build tree BUILD_DIR into WORK/prefix, then builds and runs the consumer application
 # against it three ways: find_package with the static library, with the shared library, and
-# pkg-config; with cpp, a C++ consumer both with find_package(ubii COMPONENTS cpp) and pkg-config
+# pkg-config; on the Linux port also a program and an engine plugin .so using the port, with
+# pkg-config ubii (shared) and ubii-static (libubii inside, none of its symbols exported); with cpp, a C++ consumer both with find_package(ubii COMPONENTS cpp) and pkg-config
 # ubii-cpp.
 #   check_install.sh BUILD_DIR WORK [ocr] [cpp] [testing]   (ocr: the build has the OCR pipelines,
 #     cpp: the C++ layer, also via pkg-config; testing: build examples/testing against the
@@ -49,6 +50,32 @@ LD_LIBRARY_PATH="$libdir" ldd "$work/cmake-build/consumer_shared" | grep -F "$li
 flags=$(PKG_CONFIG_PATH="$libdir/pkgconfig" pkg-config --cflags --libs ubii)
 cc -std=c99 -Wall -Werror "$here/consumer.c" $flags -o "$work/consumer_pkgconfig"
 LD_LIBRARY_PATH="$libdir" "$work/consumer_pkgconfig"
+if [ -f "$prefix/include/ubii/port_linux.h" ]; then
+  # The README's two forms with the port in use: ubii (the shared library) for a program, and
+  # ubii-static for a program and for an engine plugin .so that carries libubii inside.
+  LD_LIBRARY_PATH="$libdir" cc -std=c99 -Wall -Werror "$here/consumer_port.c" $flags \
+    -o "$work/consumer_port_shared"
+  LD_LIBRARY_PATH="$libdir" "$work/consumer_port_shared"
+  static_flags=$(PKG_CONFIG_PATH="$libdir/pkgconfig" pkg-config --cflags --libs ubii-static)
+  cc -std=c99 -Wall -Werror "$here/consumer_port.c" $static_flags -o "$work/consumer_port_static"
+  "$work/consumer_port_static"
+  cc -std=c99 -Wall -Werror -shared -fPIC -DCONSUMER_PLUGIN "$here/consumer_port.c" $static_flags \
+    -o "$work/consumer_plugin.so"
+  cc -std=c99 -Wall -Werror "$here/consumer_plugin_host.c" -ldl -o "$work/consumer_plugin_host"
+  "$work/consumer_plugin_host" "$work/consumer_plugin.so"
+  for binary in consumer_port_static consumer_plugin.so; do
+    if ldd "$work/$binary" | grep -F libubii >/dev/null; then
+      echo "check_install: $binary loads a shared libubii instead of carrying it" >&2
+      exit 1
+    fi
+  done
+  exported=$(nm -D --defined-only "$work/consumer_plugin.so" | awk '{print $NF}' |
+    { grep -E '^(ubii_|pb_|zmq_|lws_)' || [ $? -eq 1 ]; })
+  if [ -n "$exported" ]; then
+    echo "check_install: the plugin exports libubii's symbols:" $exported >&2
+    exit 1
+  fi
+fi
 if [ "$consumer_ocr" = ON ]; then
   OMP_THREAD_LIMIT=1 "$work/cmake-build/consumer_ocr"
 fi

@@ -11,25 +11,32 @@ instrumentation='^(__odr_asan|__asan|___asan|__ubsan|__sancov)'
 [ $# -gt 0 ] || { echo "usage: check_core_objects.sh OBJECT..." >&2; exit 2; }
 failures=0
 
-allocators=$(nm -u "$@" 2>/dev/null | awk '{print $NF}' |
-  grep -E '^(malloc|calloc|realloc|free|aligned_alloc|posix_memalign|strdup|_Zn[wa]m|_Zd[la]Pv.*|pthread_.*)$' |
-  sort -u || true)
+# The tools run on their own first: a tool that fails (a missing object, a file it cannot read)
+# fails the check, instead of yielding no symbols that then look clean. Only grep's "no match"
+# (exit 1) counts as an empty result.
+undefined=$(nm -u "$@")
+sections=$(objdump -t "$@")
+defined=$(nm -g --defined-only "$@")
+matching() { grep "$@" || [ $? -eq 1 ]; }
+
+allocators=$(awk '{print $NF}' <<<"$undefined" |
+  matching -E '^(malloc|calloc|realloc|free|aligned_alloc|posix_memalign|strdup|_Zn[wa]m|_Zd[la]Pv.*|pthread_.*)$' |
+  sort -u)
 if [ -n "$allocators" ]; then
   echo "check_core_objects: heap or thread functions referenced:" $allocators
   failures=1
 fi
 
 # Constant tables holding pointers sit in .data.rel.ro (read-only once relocated): not mutable.
-mutable=$(objdump -t "$@" 2>/dev/null |
-  awk '$0 ~ / O / { section = $(NF - 2); if (section ~ /^\.(data|bss)/ && section !~ /^\.data\.rel\.ro/) print $NF }' |
-  grep -Ev "$instrumentation" | sort -u || true)
+mutable=$(awk '$0 ~ / O / { section = $(NF - 2); if (section ~ /^\.(data|bss)/ && section !~ /^\.data\.rel\.ro/) print $NF }' <<<"$sections" |
+  matching -Ev "$instrumentation" | sort -u)
 if [ -n "$mutable" ]; then
   echo "check_core_objects: writable global or static data:" $mutable
   failures=1
 fi
 
-foreign=$(nm -g --defined-only "$@" 2>/dev/null | awk 'NF == 3 {print $3}' | grep -v '^ubii_' |
-  grep -Ev "$instrumentation" | sort -u || true)
+foreign=$(awk 'NF == 3 {print $3}' <<<"$defined" | matching -v '^ubii_' |
+  matching -Ev "$instrumentation" | sort -u)
 if [ -n "$foreign" ]; then
   echo "check_core_objects: exported symbols without the ubii_ prefix:" $foreign
   failures=1

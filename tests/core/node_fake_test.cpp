@@ -487,8 +487,8 @@ TEST_F(NodeWithFakeMaster, StopDuringADeregistrationAfterALossWaitsForIt)
     EXPECT_EQ(fake.state(UBII_CHANNEL_SERVICE), UBII_CHANNEL_CLOSED);
 }
 
-// Neither master drops a client's subscriptions when it deregisters (PROTOCOL.md 2.8): the node
-// releases them itself first.
+// Neither master drops a client's subscriptions when it deregisters (docs/PROTOCOL.md §2.8): the
+// node releases them itself first.
 TEST_F(NodeWithFakeMaster, StopReleasesEverySubscriptionBeforeDeregistering)
 {
     start_ready();
@@ -572,11 +572,11 @@ TEST_F(NodeWithFakeMaster, StopCancelsPendingCallsDeregistersAndCloses)
 TEST_F(NodeWithFakeMaster, CallbacksCannotPollReentrantly)
 {
     start_ready();
-    static ubii_status nested = UBII_OK;
-    auto record_fn = [](ubii_node *n, const ubii_record *, void *) {
-        nested = ubii_node_poll(n, 0);
+    ubii_status nested = UBII_OK; // per run: a static would let --gtest_repeat pass on stale state
+    auto record_fn = [](ubii_node *n, const ubii_record *, void *user) {
+        *static_cast<ubii_status *>(user) = ubii_node_poll(n, 0);
     };
-    ASSERT_EQ(ubii_subscribe(&node, "/a", record_fn, nullptr, nullptr), UBII_OK);
+    ASSERT_EQ(ubii_subscribe(&node, "/a", record_fn, &nested, nullptr), UBII_OK);
     poll(3);
     fake.push_topic(double_record("/a", 1.0));
     poll(1);

@@ -1,12 +1,31 @@
 /* libFuzzer target: a ServiceReply from the master, parsed as the node parses it and decoded into
  * the messages the node and applications read from replies. */
-#include "node_internal.h"
+#include <string.h>
+
+#include "reply_parse.h"
+#include "ubii/devices/component.pb.h"
 #include "ubii/devices/device.pb.h"
 #include "ubii/servers/server.pb.h"
 #include "ubii/service_codec.h"
 #include "ubii/wire.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+/* Reads every byte of what it is handed, so that the sanitizers see a read outside the reply. */
+static bool touch_element(const void *element, void *checksum)
+{
+    const ubii_devices_Component *component = element;
+    *(size_t *)checksum += strlen(component->topic) + strlen(component->id);
+    return true;
+}
+
+static bool touch_text(const char *text, size_t length, void *checksum)
+{
+    for (size_t i = 0; i < length; ++i) {
+        *(size_t *)checksum += (unsigned char)text[i];
+    }
+    return true;
+}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -30,5 +49,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     ubii_field_iter_init(&it, reply.bytes, reply.size, 1);
     while (ubii_field_iter_next(&it, &element, &element_size)) {
     }
-    return 0;
+    size_t checksum = 0;
+    ubii_devices_Component component;
+    ubii_reply_for_each(&reply, reply.member, ubii_devices_Device_components_tag,
+                        ubii_devices_Component_fields, &component, touch_element, &checksum);
+    ubii_reply_for_each(&reply, reply.member, 1, ubii_devices_Component_fields, &component,
+                        touch_element, &checksum);
+    ubii_reply_for_each_string(&reply, reply.member, touch_text, &checksum);
+    return checksum == (size_t)-1; /* keeps the reads from being optimised away */
 }

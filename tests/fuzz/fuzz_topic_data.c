@@ -2,7 +2,7 @@
  * dispatched to a subscription whose callback tries every accessor on it. */
 #include <string.h>
 
-#include "node_internal.h"
+#include "record.h"
 #include "ubii/image.h"
 #include "ubii/lists.h"
 #include "ubii/dataStructure/object2d.pb.h"

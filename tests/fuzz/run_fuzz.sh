@@ -10,11 +10,13 @@ CC=clang cmake -S "$source" -B "$work" -DUBII_PORT=embedded -DUBII_BUILD_FUZZ=ON
   -DUBII_BUILD_EXAMPLES=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo >"$work.configure.log" 2>&1 ||
   { cat "$work.configure.log"; exit 1; }
 cmake --build "$work" -j 2 >"$work.build.log" 2>&1 || { cat "$work.build.log"; exit 1; }
-for target in fuzz_port_parsers fuzz_topic_data fuzz_service_reply; do
+for target in fuzz_port_parsers fuzz_zmtp_stream fuzz_url fuzz_topic_data fuzz_service_reply; do
   corpus="$work/corpus/$target"
   mkdir -p "$corpus"
+  # New inputs go to the work corpus; the seeds in the tree are read only.
   "$work/tests/fuzz/$target" -max_total_time="$seconds" -print_final_stats=1 "$corpus" \
-    >"$work/$target.log" 2>&1 || { tail -n 40 "$work/$target.log"; exit 1; }
+    "$source/tests/fuzz/seeds/$target" >"$work/$target.log" 2>&1 || { tail -n 40 "$work/$target.log"; exit 1; }
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$work/$target.log")
-  echo "run_fuzz: $target: $runs inputs in $seconds s, no finding"
+  coverage=$(grep -E '^#[0-9]+' "$work/$target.log" | tail -n 1 | sed -n 's/.* cov: \([0-9]*\) ft: \([0-9]*\).*/\1 edges, \2 features/p')
+  echo "run_fuzz: $target: $runs inputs in $seconds s, coverage ${coverage:-unknown}, no finding"
 done

@@ -1,5 +1,5 @@
-// The current master's binary HTTP service endpoint, as PROTOCOL.md 1.3 states it, in front of the
-// npm 0.4.0 master (which lacks it): POST /services/binary with Content-Type
+// The current master's binary HTTP service endpoint, as docs/PROTOCOL.md §1.3 states it, in front
+// of the npm 0.4.0 master (which lacks it): POST /services/binary with Content-Type
 // application/octet-stream carries a serialized ServiceRequest; the answer is HTTP 200,
 // application/octet-stream, a serialized ServiceReply (service errors too). Requests are handed to
 // the master's ZMQ REP socket, one at a time as REQ/REP demands. A request that breaks the contract

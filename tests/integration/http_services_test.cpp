@@ -1,6 +1,6 @@
-// Services over binary HTTP (PROTOCOL.md 1.3), through the contract bridge in front of the real
-// master, with topic data straight to the master; and what the npm 0.4.0 master's own HTTP port
-// answers (404: it predates /services/binary).
+// Services over binary HTTP (docs/PROTOCOL.md §1.3), through the contract bridge in front of the
+// real master, with topic data straight to the master; and what the npm 0.4.0 master's own HTTP
+// port answers (404: it predates /services/binary).
 #include <cstring>
 #include <regex>
 

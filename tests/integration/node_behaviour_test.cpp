@@ -37,11 +37,13 @@ TEST(Subscriptions, RegexReceivesMatchingTopicsOnly)
     ASSERT_TRUE(node.wait_ready());
     const std::string base = unique_topic("/regex");
     node.collect("^" + base + "/[ab]$", true);
+    // /b goes last: the master forwards one publisher's records in order, so by the time a /b
+    // arrives, every /c and /ab published before it would have arrived too.
     ASSERT_TRUE(node.poll_until([&] {
         ubii_publish_int32(node.get(), (base + "/a").c_str(), 1);
         ubii_publish_int32(node.get(), (base + "/c").c_str(), 3);
-        ubii_publish_int32(node.get(), (base + "/b").c_str(), 2);
         ubii_publish_int32(node.get(), (base + "/ab").c_str(), 4);
+        ubii_publish_int32(node.get(), (base + "/b").c_str(), 2);
         std::map<std::string, int> seen;
         for (const auto &r : node.received()) {
             seen[r.topic]++;
@@ -170,8 +172,8 @@ struct ReplyCatcher {
     }
 };
 
-// Neither master drops a client's subscriptions when it deregisters (PROTOCOL.md 2.8); the node
-// releases them before it deregisters. A raw topic connection under the stopped node's old id
+// Neither master drops a client's subscriptions when it deregisters (docs/PROTOCOL.md §2.8); the
+// node releases them before it deregisters. A raw topic connection under the stopped node's old id
 // (its routing id or ?clientID=) then receives nothing the master would still forward to it.
 TEST(Subscriptions, AStoppedNodeLeavesNoSubscriptionAtTheMaster)
 {

@@ -5,7 +5,10 @@
 //   node nodejs_peer.js CLIENT_PACKAGE_DIR SERVICE_URL TOPIC_URL RUN_ID
 'use strict';
 const [packageDir, serviceUrl, topicUrl, run] = process.argv.slice(2);
-const { UbiiClientNode } = require(packageDir);
+const path = require('path');
+const clientDir = path.resolve(packageDir);
+require(path.join(__dirname, '../support', 'nodejs_scratch_dir.js')).enter(); // before the client loads
+const { UbiiClientNode } = require(clientDir);
 
 // The values both sides use; the C++ test has the same table (interop_test.cpp).
 const table = {

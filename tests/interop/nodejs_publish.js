@@ -3,7 +3,10 @@
 //   node nodejs_publish.js CLIENT_PACKAGE_DIR SERVICE_URL TOPIC_URL TOPIC SIZE
 'use strict';
 const [packageDir, serviceUrl, topicUrl, topic, sizeText] = process.argv.slice(2);
-const { UbiiClientNode } = require(packageDir);
+const path = require('path');
+const clientDir = path.resolve(packageDir);
+require(path.join(__dirname, '../support', 'nodejs_scratch_dir.js')).enter(); // before the client loads
+const { UbiiClientNode } = require(clientDir);
 (async () => {
   const node = new UbiiClientNode('nodejs-publisher', { address: serviceUrl }, { address: topicUrl });
   await node.initialize();

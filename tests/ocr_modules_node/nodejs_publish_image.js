@@ -8,18 +8,23 @@
 const fs = require('fs');
 const [packageDir, serviceUrl, topicUrl, topic, pixelFile, widthText, heightText, formatText,
   burstText, goodAfterFile] = process.argv.slice(2);
-const { UbiiClientNode } = require(packageDir);
+const path = require('path');
+const clientDir = path.resolve(packageDir);
+const pixelPath = path.resolve(pixelFile);
+const goodAfterPath = goodAfterFile ? path.resolve(goodAfterFile) : undefined;
+require(path.join(__dirname, '../support', 'nodejs_scratch_dir.js')).enter(); // before the client loads
+const { UbiiClientNode } = require(clientDir);
 
 (async () => {
   const width = Number(widthText);
   const height = Number(heightText);
-  const data = fs.readFileSync(pixelFile);
+  const data = fs.readFileSync(pixelPath);
   const oneRowShort = data.subarray(0, data.length - data.length / height);
   const node = new UbiiClientNode('nodejs-image-publisher', { address: serviceUrl }, { address: topicUrl });
   await node.initialize();
   process.stdout.write('PUBLISHER ready\n');
   setInterval(() => {
-    const good = !goodAfterFile || fs.existsSync(goodAfterFile);
+    const good = !goodAfterPath || fs.existsSync(goodAfterPath);
     const image2D = { width, height, dataFormat: Number(formatText), data: good ? data : oneRowShort };
     for (let i = 0; i < Number(burstText); ++i) node.publishRecordImmediately({ topic, image2D });
   }, 500);

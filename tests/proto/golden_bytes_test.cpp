@@ -1,5 +1,5 @@
-// The golden byte sequences of PROTOCOL.md 7.1 (written by the broker's own encoder) decode with
-// our generated code to the values they stand for, and encode back to exactly the same bytes.
+// The golden byte sequences of docs/PROTOCOL.md §3.4 (written by the broker's own encoder) decode
+// with our generated code to the values they stand for, and encode back to exactly the same bytes.
 #include <cstring>
 #include <string>
 #include <vector>

@@ -18,7 +18,7 @@ namespace
 
 // Protobuf by hand, because the schema this test is built with has no types for the left-out
 // members: these are the bytes a full-schema sender (the Node.js client, libubii's full build)
-// writes. Field numbers: PROTOCOL.md 3.3.
+// writes. Field numbers: docs/PROTOCOL.md §3.3.
 using Bytes = std::vector<uint8_t>;
 
 Bytes varint(uint64_t value)

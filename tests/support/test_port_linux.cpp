@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "test_port.h"
+#include "ubii/config.h"
 #include "ubii/port_linux.h"
 
 namespace ubii_test
@@ -52,7 +53,7 @@ bool TestPort::supports_tls()
 
 size_t TestPort::max_message_size()
 {
-    return 16u * 1024u * 1024u; // the default of ubii_linux_port_options.max_message_size
+    return UBII_MAX_MESSAGE_SIZE; // the default of ubii_linux_port_options.max_message_size
 }
 
 } // namespace ubii_test

@@ -30,6 +30,12 @@
 #define UBII_MAX_NAME_SIZE 128
 #endif
 
+/* Longest client id the master assigns, including the NUL. Both masters use UUIDs (36 characters).
+ */
+#ifndef UBII_MAX_CLIENT_ID_SIZE
+#define UBII_MAX_CLIENT_ID_SIZE 48
+#endif
+
 /* Bytes for encoded service requests waiting for their turn (one is outstanding at a time). */
 #ifndef UBII_SERVICE_QUEUE_BYTES
 #define UBII_SERVICE_QUEUE_BYTES 4096
@@ -40,7 +46,12 @@
 #define UBII_SERVICE_QUEUE_DEPTH 8
 #endif
 
-/* Largest message the node accepts from the master; larger ones are dropped and counted. */
+/* Largest message, either way: a record (TopicData) a node publishes above it is refused with
+ * UBII_ERR_TOO_LARGE before it reaches the port. It is also the Linux port's default limit for what
+ * arrives (ubii_linux_port_options.max_message_size), where a larger message ends the connection;
+ * the embedded port has its own, smaller buffers (UBII_EMBEDDED_MAX_MESSAGE) and drops and counts
+ * what does not fit. An RGBA8 Image2D of W x H pixels takes 4*W*H bytes plus about 30: 2000 x 2000
+ * fits in 16 MiB, 2048 x 2048 (exactly 16 MiB of pixels) does not. */
 #ifndef UBII_MAX_MESSAGE_SIZE
 #define UBII_MAX_MESSAGE_SIZE (16u * 1024u * 1024u)
 #endif

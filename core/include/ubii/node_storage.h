@@ -30,7 +30,7 @@ typedef struct ubii__call {
     uint32_t timeout_ms;
     ubii__callback fn;
     void *user;
-    uint8_t purpose; /* the application's, or one of the node's own steps */
+    uint8_t node_step; /* one of the node's own protocol steps: dropped, not answered, on cancel */
 } ubii__call;
 
 struct ubii_node {
@@ -40,7 +40,7 @@ struct ubii_node {
     char service_url[UBII_MAX_URL_SIZE];
     char topic_url[UBII_MAX_URL_SIZE];
     char client_name[UBII_MAX_NAME_SIZE];
-    char client_id[48];
+    char client_id[UBII_MAX_CLIENT_ID_SIZE];
     /* Fields of the registration's Client that an optional part of the API adds (a
      * ubii_clients_Client *, which this header does not know): ubii/processing.h. */
     void (*complete_registration)(struct ubii_node *node, void *client);
@@ -83,7 +83,7 @@ struct ubii_node {
     uint32_t duplicate_run;
 
     char record_topic[UBII_MAX_TOPIC_SIZE];
-    char record_client_id[48];
+    char record_client_id[UBII_MAX_CLIENT_ID_SIZE];
     ubii_stats stats;
 };
 

@@ -2,7 +2,7 @@
 #define UBII_PROCESSING_H
 
 /* Offering processing modules: what this client tells the master at registration so that a
- * session can assign modules to it (SESSIONS.md 1.1). Full schema only (UBII_SCHEMA=full,
+ * session can assign modules to it (docs/PROTOCOL.md §5.1). Full schema only (UBII_SCHEMA=full,
  * proto/schemas/): a reduced schema has no ProcessingModule in its Client. ubii/ubii.h includes
  * it when the schema has it. Running the modules a session assigns is the C++ layer's
  * (ubii::Node::serve_sessions); this is the registration part every client needs. */

@@ -19,7 +19,7 @@
 extern "C" {
 #endif
 
-/* Service topics the master registers (PROTOCOL.md 2.11). */
+/* Service topics the master registers (docs/PROTOCOL.md §2.11). */
 #define UBII_SERVICE_SERVER_CONFIGURATION "/services/server_configuration"
 #define UBII_SERVICE_SERVICE_LIST "/services/service_list"
 #define UBII_SERVICE_TOPIC_LIST "/services/topic_list"
@@ -71,6 +71,25 @@ UBII_API ubii_status ubii_call_encoded(ubii_node *node, const uint8_t *request, 
  * the caller bound are called as usual. */
 UBII_API ubii_status ubii_reply_decode(const ubii_reply *reply, uint32_t expected_member,
                                        const pb_msgdesc_t *fields, void *message);
+
+/* The occurrences of a repeated message field of the reply's member: with `repeated_field` 1, the
+ * elements of a list reply (UBII_SERVICE_SERVICE_LIST's ServiceList, UBII_SERVICE_CLIENT_LIST's
+ * ClientList: every list message of the schema repeats its field 1); with
+ * ubii_devices_Device_components_tag, a registered device's components. Each is decoded into
+ * `element` (a struct of type `fields`, which pb_decode resets first) and handed to `fn`, which
+ * returns false to stop. Returns the reply's own status if it failed, UBII_ERR_WRONG_TYPE for
+ * another member than `expected_member`, UBII_ERR_DECODE for malformed bytes (the occurrences
+ * before them were handed on), else UBII_OK. No allocation. */
+typedef bool (*ubii_element_fn)(const void *element, void *user);
+UBII_API ubii_status ubii_reply_for_each(const ubii_reply *reply, uint32_t expected_member,
+                                         uint32_t repeated_field, const pb_msgdesc_t *fields,
+                                         void *element, ubii_element_fn fn, void *user);
+
+/* The same for a list reply of strings (UBII_SERVICE_TOPIC_LIST's StringList): each is handed on
+ * as bytes and a length, not NUL-terminated. */
+typedef bool (*ubii_text_fn)(const char *text, size_t length, void *user);
+UBII_API ubii_status ubii_reply_for_each_string(const ubii_reply *reply, uint32_t expected_member,
+                                                ubii_text_fn fn, void *user);
 
 #ifdef __cplusplus
 }

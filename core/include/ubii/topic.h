@@ -35,13 +35,13 @@
 extern "C" {
 #endif
 
-/* The TopicDataRecord value members of this build's schema, by field number (PROTOCOL.md 3.3):
- * UBII_RECORD_<MEMBER> for each member, its .proto name in capitals (UBII_RECORD_DOUBLE = 3,
- * UBII_RECORD_POSE3D = 18, UBII_RECORD_OBJECT2D_LIST = 21, ...). The list is generated from the
- * schema (ubii/record_types.h, see proto/README.md), so a type the schema leaves out has no name
- * here and using it does not compile; neither do the functions and headers of left-out types
- * (ubii/lists.h, image.h, devices.h). (Calling an undeclared function is an error in C++ and in C
- * with -pedantic-errors or -Werror; GCC's default C mode only warns.)
+/* The TopicDataRecord value members of this build's schema, by field number
+ * (docs/PROTOCOL.md §3.3): UBII_RECORD_<MEMBER> for each member, its .proto name in capitals
+ * (UBII_RECORD_DOUBLE = 3, UBII_RECORD_POSE3D = 18, UBII_RECORD_OBJECT2D_LIST = 21, ...). The list
+ * is generated from the schema (ubii/record_types.h, see proto/README.md), so a type the schema
+ * leaves out has no name here and using it does not compile; neither do the functions and headers
+ * of left-out types (ubii/lists.h, image.h, devices.h). (Calling an undeclared function is an error
+ * in C++ and in C with -pedantic-errors or -Werror; GCC's default C mode only warns.)
  *   full schema (UBII_SCHEMA=full): all 41 members; UBII_RECORD_QUATERNION_LIST holds a single
  *     Quaternion (a quirk of the upstream schema).
  *   topics schema (UBII_SCHEMA=topics): DOUBLE, FLOAT, INT32, BOOL, STRING, VECTOR2, VECTOR3,

@@ -9,6 +9,7 @@
 #include "ubii/service.h"
 #include "ubii/status.h"
 #include "ubii/topic.h"
+#include "ubii/url.h"
 #include "ubii/version.h"
 #include "ubii/wire.h"
 /* Generated: the optional parts of the API (lists.h, image.h, devices.h) the schema has. */

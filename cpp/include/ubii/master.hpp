@@ -1,7 +1,7 @@
 #ifndef UBII_MASTER_HPP
 #define UBII_MASTER_HPP
 
-// Typed calls of the services a master offers (PROTOCOL.md §2.11), through a node:
+// Typed calls of the services a master offers (docs/PROTOCOL.md §2.11), through a node:
 //
 //     ubii::Server server = node.wait(node.master().server_configuration(), 2s);
 //     auto device = node.wait(node.master().register_device(my_device), 2s);
@@ -23,7 +23,7 @@ namespace ubii
 
 class Node;
 
-// The services' topics (PROTOCOL.md §2.11).
+// The services' topics (docs/PROTOCOL.md §2.11).
 namespace service_topics
 {
 inline constexpr const char server_configuration[] = "/services/server_configuration";
@@ -108,11 +108,11 @@ class Sessions : public detail::ServiceGroup
     // Starts a session from its spec (or, by name, one the master has stored); the reply is the
     // session as the master runs it, with the id it assigned.
     Call<Session> start(Session session);
-    // Stops the session with `id`, and resolves with the session as the master holds it then
-    // (the current master marks it STOPPED only once every node reported its modules removed).
-    // The stop's own reply says nothing: the current master answers every stop with an error,
-    // done or not (SESSIONS.md §1.3), the npm 0.4.0 master one when the session was not running.
-    // So the session is looked up after it: ServiceError if the master has no session `id`.
+    // Stops the session with `id`, and resolves with the session as the master holds it then (the
+    // current master marks it STOPPED only once every node reported its modules removed). The
+    // stop's own reply says nothing: the current master answers every stop with an error, done or
+    // not (docs/PROTOCOL.md §5.3), the npm 0.4.0 master one when the session was not running. So
+    // the session is looked up after it: ServiceError if the master has no session `id`.
     Call<Session> stop(const std::string &id);
     // Saves a session spec in the master's database; the reply lists the sessions it created.
     Call<SessionList> save(Session session);

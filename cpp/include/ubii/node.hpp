@@ -298,13 +298,14 @@ class Node
     Scheduler &scheduler() noexcept;
 
     // ---- sessions -----------------------------------------------------------------------------
-    // Takes part in the sessions masters start (SESSIONS.md): offers `modules` at registration
-    // (Client.processing_modules; dedicated: NodeOptions::is_dedicated_processing_node), and when
-    // a start record assigns one of them to this node's client id, makes it, keeps the master's
-    // ids, wires it by the session's IO mappings (topic, topic_mux, topic_demux), starts it and
-    // reports it (runtime/add); a stop record halts and destroys the session's modules, cancels
-    // their subscriptions and reports them (runtime/remove). Call it before connect(): the offer
-    // goes with registrations from then on. Once per node (ubii::StateError after).
+    // Takes part in the sessions masters start (docs/PROTOCOL.md §5): offers `modules` at
+    // registration (Client.processing_modules; dedicated:
+    // NodeOptions::is_dedicated_processing_node), and when a start record assigns one of them to
+    // this node's client id, makes it, keeps the master's ids, wires it by the session's IO
+    // mappings (topic, topic_mux, topic_demux), starts it and reports it (runtime/add); a stop
+    // record halts and destroys the session's modules, cancels their subscriptions and reports them
+    // (runtime/remove). Call it before connect(): the offer goes with registrations from then on.
+    // Once per node (ubii::StateError after).
     //
     // What goes wrong is an error event and a SessionEvent::failed, and the rest goes on: an
     // unknown module name or on_created throwing (that module is not run nor reported), a mapping

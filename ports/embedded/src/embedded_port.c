@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "embedded_internal.h"
+#include "ubii/url.h"
 
 void ubii__embedded_error(ubii_embedded_port *port, const char *what)
 {
@@ -136,33 +137,25 @@ static ubii_status start_connect(ubii_embedded_port *port, ubii__embedded_channe
     return UBII_OK;
 }
 
-/* "scheme://a.b.c.d:port/path" after the scheme's `skip` characters, into the channel. Returns
- * NULL, or what is wrong with the URL. */
-static const char *parse_url(const char *url, size_t skip, ubii__embedded_channel *ch)
+/* The address, port and path of a parsed URL into the channel. Returns NULL, or what is wrong. */
+static const char *take_endpoint(const ubii_url *url, ubii__embedded_channel *ch)
 {
-    static const char *const malformed = "URL must be scheme://IPv4:port[/path]";
-    const char *host = url + skip;
-    size_t host_length = strcspn(host, ":/");
     char ip[16];
-    if (host_length == 0 || host_length >= sizeof ip || host[host_length] != ':') {
-        return malformed;
+    if (url->host_length >= sizeof ip) {
+        return "URL host must be an IPv4 address (the embedded port resolves no names)";
     }
-    memcpy(ip, host, host_length);
-    ip[host_length] = '\0';
+    memcpy(ip, url->host, url->host_length);
+    ip[url->host_length] = '\0';
     if (inet_pton(AF_INET, ip, &ch->address) != 1) {
-        return malformed;
+        return "URL host must be an IPv4 address (the embedded port resolves no names)";
     }
-    char *end;
-    long number = strtol(host + host_length + 1, &end, 10);
-    if (number <= 0 || number > 65535 || (*end != '\0' && *end != '/')) {
-        return malformed;
-    }
-    ch->port = (uint16_t)number;
-    const char *path = *end == '/' ? end : "/";
-    if (strlen(path) >= sizeof ch->path) {
+    ch->port = url->port;
+    const char *slash = url->path[0] == '/' ? "" : "/";
+    if (strlen(slash) + strlen(url->path) >= sizeof ch->path) {
         return "URL path longer than UBII_EMBEDDED_MAX_PATH allows";
     }
-    strcpy(ch->path, path);
+    strcpy(ch->path, slash);
+    strcat(ch->path, url->path);
     return NULL;
 }
 
@@ -189,22 +182,23 @@ static ubii_status open_channel(void *context, ubii_channel which, const char *u
     bind_buffers(port);
     ubii__embedded_channel *ch = &port->channels[which];
     bool topic = which == UBII_CHANNEL_TOPIC;
-    size_t skip;
-    if (strncmp(url, "tcp://", 6) == 0) {
+    ubii_url parsed;
+    if (ubii_url_parse(url, &parsed) != UBII_OK) {
+        ubii__embedded_error(port, "URL must be scheme://IPv4[:port][/path]");
+        return UBII_ERR_INVALID_ARGUMENT;
+    }
+    if (parsed.scheme == UBII_URL_TCP) {
         ch->protocol = PROTOCOL_ZMTP;
         ch->zmq_type = topic ? ZMQ_TYPE_DEALER : ZMQ_TYPE_REQ;
-        skip = 6;
-    } else if (strncmp(url, "ws://", 5) == 0 && topic) {
+    } else if (parsed.scheme == UBII_URL_WS && topic) {
         ch->protocol = PROTOCOL_WEBSOCKET;
-        skip = 5;
-    } else if (strncmp(url, "http://", 7) == 0 && !topic) {
+    } else if (parsed.scheme == UBII_URL_HTTP && !topic) {
         ch->protocol = PROTOCOL_HTTP;
-        skip = 7;
     } else {
         ubii__embedded_error(port, "URL scheme not supported by the embedded port");
         return UBII_ERR_UNSUPPORTED;
     }
-    const char *url_error = parse_url(url, skip, ch);
+    const char *url_error = take_endpoint(&parsed, ch);
     if (url_error != NULL) {
         ch->protocol = PROTOCOL_NONE;
         ubii__embedded_error(port, url_error);

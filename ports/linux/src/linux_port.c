@@ -8,8 +8,7 @@
 #include <unistd.h>
 
 #include "linux_port.h"
-
-enum { DEFAULT_MAX_MESSAGE_SIZE = 16 * 1024 * 1024 };
+#include "ubii/config.h"
 
 static bool starts_with(const char *text, const char *prefix)
 {
@@ -269,7 +268,7 @@ ubii_status ubii_linux_port_create(ubii_linux_port **result, const ubii_linux_po
         return UBII_ERR_INVALID_ARGUMENT;
     }
     if (port->options.max_message_size == 0) {
-        port->options.max_message_size = DEFAULT_MAX_MESSAGE_SIZE;
+        port->options.max_message_size = UBII_MAX_MESSAGE_SIZE;
     }
     port->wake_fd = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
     if (port->wake_fd < 0) {

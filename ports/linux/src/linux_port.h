@@ -90,9 +90,15 @@ struct ubii_linux_port {
     int wake_fd; /* eventfd: ubii_linux_port_wake() makes it readable, ending a wait */
 };
 
-/* lws_channel.c */
+/* lws_context.c: the libwebsockets context and the wait. */
 /* Starts libwebsockets (once); false if it cannot. */
 bool ubii__lws_start(ubii_linux_port *port);
+/* Runs libwebsockets once, returning after at most timeout_ms. */
+void ubii__lws_service(ubii_linux_port *port, int timeout_ms);
+int ubii__lws_fds(ubii_linux_port *port, ubii_pollfd *fds, int capacity);
+void ubii__lws_destroy(ubii_linux_port *port);
+
+/* lws_channel.c: the port functions for ws://, wss://, http://, https:// and in-thread tcp://. */
 ubii_status ubii__lws_open(ubii_linux_port *port, ubii_channel which, const char *url,
                            const char *client_id);
 void ubii__lws_close(ubii_linux_port *port, ubii_channel which);
@@ -101,13 +107,10 @@ ubii_status ubii__lws_send_begin(ubii_linux_port *port, ubii_channel which, size
 ubii_status ubii__lws_send_commit(ubii_linux_port *port, ubii_channel which, unsigned flags);
 ubii_status ubii__lws_receive(ubii_linux_port *port, ubii_channel which, const uint8_t **data,
                               size_t *size, unsigned *flags);
-/* Runs libwebsockets once, returning after at most timeout_ms. */
-void ubii__lws_service(ubii_linux_port *port, int timeout_ms);
-int ubii__lws_fds(ubii_linux_port *port, ubii_pollfd *fds, int capacity);
-/* Keeps one adopted fd per ZMQ socket while libwebsockets runs. */
+
+/* lws_zmq_fds.c: keeps one adopted fd per ZMQ socket while libwebsockets runs. */
 void ubii__lws_adopt_zmq(ubii_linux_port *port, void *socket);
 void ubii__lws_release_zmq(ubii_linux_port *port, void *socket);
-void ubii__lws_destroy(ubii_linux_port *port);
 
 /* zmq_channel.c */
 ubii_status ubii__zmq_open(ubii_linux_port *port, ubii_channel which, const char *url,

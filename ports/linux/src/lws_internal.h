@@ -1,8 +1,10 @@
 #ifndef UBII_LWS_INTERNAL_H
 #define UBII_LWS_INTERNAL_H
 
-/* Shared by the Linux port's libwebsockets files: lws_channel.c (the connections, WebSocket and
- * HTTP) and lws_zmtp.c (ZMTP over an lws raw socket, in the caller's thread). */
+/* Shared by the Linux port's libwebsockets files: lws_channel.c (the port's functions),
+ * lws_context.c (the context and the wait), lws_connection.c (the connection records, which it
+ * alone owns), lws_outbox.c (outgoing frames), and the protocols over them: lws_websocket.c,
+ * lws_http.c, lws_zmtp.c (ZMTP over an lws raw socket, in the caller's thread). */
 
 #include <libwebsockets.h>
 
@@ -66,22 +68,18 @@ typedef struct lws_connection {
     int status;
 } lws_connection;
 
+/* lws_connection.c: the records, their queues, and what arrives on them. */
+queued_message *ubii__lws_new_message(size_t size, size_t headroom);
+void ubii__lws_push(message_queue *queue, queued_message *message);
+queued_message *ubii__lws_pop(message_queue *queue);
+void ubii__lws_clear(message_queue *queue);
 void ubii__lws_set_error(ubii_linux_port *port, const char *what, const char *detail);
 /* The channel the connection serves, or NULL once the channel has let go of it. */
 lws_channel *ubii__lws_channel_of(lws_connection *connection);
 /* Marks the channel LOST with a reason. */
 void ubii__lws_lose(lws_connection *connection, const char *what, const char *detail);
-/* Appends to the connection's assembly buffer; false over `limit` or without memory. */
-bool ubii__lws_append(lws_connection *connection, const void *in, size_t len, size_t limit);
-/* Queues a copy of a received message for the node. */
-void ubii__lws_deliver(lws_connection *connection, lws_channel *ch, const uint8_t *data,
-                       size_t size, unsigned flags);
-/* lws_wake.c: the port's wake-up eventfd as an lws raw file, drained when it fires. */
-int ubii__lws_on_wake(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
-                      size_t len);
-void ubii__lws_adopt_wake(ubii_linux_port *port);
-/* Writes what the outbox holds, as much as the socket takes now; -1 to end the connection. */
-int ubii__lws_write_outbox(lws_connection *connection, lws_channel *ch, struct lws *wsi);
+/* Frees the record's buffers and lets go of the port (the record itself stays for lws). */
+void ubii__lws_detach(lws_connection *connection);
 /* A new connection record for a channel, counted as live. */
 lws_connection *ubii__lws_new_connection(ubii_linux_port *port, ubii_channel which);
 /* Starts connecting as `info` says; on failure at once, frees the record and marks the channel
@@ -90,15 +88,44 @@ void ubii__lws_connect(ubii_linux_port *port, ubii_channel which, lws_connection
                        struct lws_client_connect_info *info, const char *failure);
 /* WSI_DESTROY: reports the end to a channel still open, then frees the record. */
 void ubii__lws_connection_destroyed(lws_connection *connection, struct lws *wsi, const char *what);
+/* What every kind of connection tells lws: where to, TLS, and the record to report to. */
 void ubii__lws_describe_connection(ubii_linux_port *port, const lws_channel *ch,
                                    lws_connection *connection, const char *path,
                                    struct lws_client_connect_info *info);
+/* Appends to the connection's assembly buffer; false over `limit` or without memory. */
+bool ubii__lws_append(lws_connection *connection, const void *in, size_t len, size_t limit);
+/* Queues a copy of a received message for the node. */
+void ubii__lws_deliver(lws_connection *connection, lws_channel *ch, const uint8_t *data,
+                       size_t size, unsigned flags);
+/* Delivers the assembly buffer as one message and empties it. */
+void ubii__lws_deliver_assembled(lws_connection *connection, lws_channel *ch);
 
-/* lws_zmtp.c */
+/* lws_outbox.c */
+bool ubii__lws_output_waits(const lws_connection *connection, const lws_channel *ch);
+/* Writes what the outbox holds, as much as the socket takes now; -1 to end the connection. */
+int ubii__lws_write_outbox(lws_connection *connection, lws_channel *ch, struct lws *wsi);
+
+/* The protocols: each an lws callback and a way to start a connection (host and port already in
+ * the channel). */
+int ubii__lws_on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+                           size_t len);
+ubii_status ubii__lws_connect_websocket(ubii_linux_port *port, ubii_channel which,
+                                        const char *client_id);
+int ubii__lws_on_http(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+                      size_t len);
+/* Posts `body` (taken over) on a connection of its own. */
+ubii_status ubii__lws_post_request(ubii_linux_port *port, ubii_channel which, queued_message *body);
 int ubii__lws_on_zmtp(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
                       size_t len);
-/* Connects the channel (host and port already in it) as a REQ or a DEALER. */
+/* Connects the channel as a REQ or a DEALER. */
 ubii_status ubii__lws_connect_zmtp(ubii_linux_port *port, ubii_channel which,
                                    const char *client_id);
+
+/* lws_zmq_fds.c and lws_wake.c: descriptors that end the wait. */
+int ubii__lws_on_zmq_wakeup(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+                            size_t len);
+int ubii__lws_on_wake(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+                      size_t len);
+void ubii__lws_adopt_wake(ubii_linux_port *port);
 
 #endif

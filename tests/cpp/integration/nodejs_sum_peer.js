@@ -6,7 +6,10 @@
 //   node nodejs_sum_peer.js CLIENT_PACKAGE_DIR SERVICE_URL TOPIC_URL RUN_ID PAIRS
 'use strict';
 const [packageDir, serviceUrl, topicUrl, run, pairs] = process.argv.slice(2);
-const { UbiiClientNode } = require(packageDir);
+const path = require('path');
+const clientDir = path.resolve(packageDir);
+require(path.join(__dirname, '../../support', 'nodejs_scratch_dir.js')).enter(); // before the client loads
+const { UbiiClientNode } = require(clientDir);
 
 const say = (line) => process.stdout.write('PEER ' + line + '\n');
 

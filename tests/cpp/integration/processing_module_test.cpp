@@ -266,7 +266,7 @@ TEST(ProcessingModuleOnMaster, AnExternalLoopWaitsOnTheNodesFdsUntilTheNextPassI
     EXPECT_LE(passes, 23);
 }
 
-// The npm 0.4.0 master never assigns modules to nodes (PROTOCOL.md Appendix A), but a node that
+// The npm 0.4.0 master never assigns modules to nodes (docs/PROTOCOL.md §6), but a node that
 // serves sessions must still work with it: its registration, with the modules offered, is
 // accepted, and its start/stop subscriptions and master check raise nothing.
 TEST(ServingSessions, TheNpmMasterTakesTheOfferedModulesAndAssignsNone)

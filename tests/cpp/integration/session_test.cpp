@@ -1,6 +1,6 @@
 // Sessions against a master that assigns processing modules to nodes: the current master, run
 // from a checkout (scripts/current-master.sh; the npm 0.4.0 master runs every session module
-// itself and tells nodes nothing: PROTOCOL.md Appendix A). The official Node.js node is the other
+// itself and tells nodes nothing: docs/PROTOCOL.md §6). The official Node.js node is the other
 // party: it publishes the inputs, receives the outputs, and runs a JavaScript module of its own.
 #include <gtest/gtest.h>
 
@@ -46,7 +46,7 @@ std::string peer_dir(const std::string &name)
 }
 
 // A session spec as a client writes it: modules by name, mappings by module name (the master
-// fills in the ids, SESSIONS.md 1.1).
+// fills in the ids, docs/PROTOCOL.md §5.1).
 struct SessionSpec {
     ubii::Session session;
 

@@ -1,6 +1,6 @@
 // ubii::Node serving sessions on an in-process scripted master (FakePort): what it offers at
 // registration, which modules of a start record it runs and how it wires them, what it reports,
-// and every way a session can go wrong (SESSIONS.md §1 states the master's side).
+// and every way a session can go wrong (docs/PROTOCOL.md §5 states the master's side).
 #include <gtest/gtest.h>
 
 #include <algorithm>

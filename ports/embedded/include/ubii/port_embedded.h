@@ -16,6 +16,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "ubii/embedded_config.h"
 #include "ubii/export.h"
 #include "ubii/port.h"
 #include "ubii/status.h"
@@ -23,26 +24,6 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* Largest message payload either way (a TopicData, a ServiceRequest or ServiceReply). */
-#ifndef UBII_EMBEDDED_MAX_MESSAGE
-#define UBII_EMBEDDED_MAX_MESSAGE 2048
-#endif
-
-/* Longest path (with query) of a URL, including the NUL: "/services/binary", or the WebSocket
- * path with "?clientID=<36-character id>" appended. A longer URL is refused by open. */
-#ifndef UBII_EMBEDDED_MAX_PATH
-#define UBII_EMBEDDED_MAX_PATH 80
-#endif
-
-/* Room next to a message for its framing. ZMTP needs 11 bytes and WebSocket 14; the HTTP request
- * head needs 144 plus the path, so this default lets every protocol carry a message of
- * UBII_EMBEDDED_MAX_MESSAGE. Handshakes use the whole buffer (it holds no message then). */
-#ifndef UBII_EMBEDDED_HEADROOM
-#define UBII_EMBEDDED_HEADROOM (UBII_EMBEDDED_MAX_PATH + 144)
-#endif
-
-#define UBII_EMBEDDED_BUFFER (UBII_EMBEDDED_MAX_MESSAGE + UBII_EMBEDDED_HEADROOM)
 
 /* What the port needs from the platform; a firmware supplies its own. */
 typedef struct ubii_embedded_platform {
@@ -69,7 +50,7 @@ typedef struct ubii__embedded_channel {
     uint32_t address; /* IPv4, network order */
     uint16_t port;
     char path[UBII_EMBEDDED_MAX_PATH];
-    char identity[48]; /* the client id: the schema's Client.id max_size */
+    char identity[UBII_MAX_CLIENT_ID_SIZE];
     char websocket_key[32];
     uint64_t discard; /* bytes of an over-size message still to skip as they arrive */
     bool lent;        /* rx[0..lent_size) holds the message lent to the core */
@@ -98,10 +79,10 @@ typedef struct ubii_embedded_port {
     uint8_t topic_tx[UBII_EMBEDDED_BUFFER];
     /* WebSocket masking keys, drawn from the platform in bulk: a getrandom per message would cost
      * more kernel time than the rest of sending it. */
-    uint8_t mask_pool[64];
+    uint8_t mask_pool[UBII_EMBEDDED_MASK_POOL];
     uint8_t mask_pool_left;
     uint32_t decode_errors; /* malformed frames from the master, dropped */
-    char last_error[96];
+    char last_error[UBII_EMBEDDED_ERROR_SIZE];
 } ubii_embedded_port;
 
 UBII_API ubii_status ubii_embedded_port_init(ubii_embedded_port *port,

@@ -45,7 +45,8 @@ typedef enum ubii_linux_zmq_engine {
 } ubii_linux_zmq_engine;
 
 typedef struct ubii_linux_port_options {
-    /* Largest message accepted from the master; a larger one drops the connection. 0: 16 MiB. */
+    /* Largest message accepted from the master; a larger one drops the connection. 0: the core's
+     * UBII_MAX_MESSAGE_SIZE (16 MiB), which also bounds what the node sends. */
     size_t max_message_size;
     /* TLS (wss://, https://) needs this set; without it such URLs give UBII_ERR_UNSUPPORTED. It
      * makes port creation load OpenSSL's certificate store (about 40 ms). libwebsockets 4.1 sets
