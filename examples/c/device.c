@@ -45,7 +45,7 @@ static void on_registered(ubii_node *node, const ubii_reply *reply, void *user)
     }
     snprintf(result->device_id, sizeof result->device_id, "%s", device.id);
     printf("registered device \"%s\" as %s\n", device.name, device.id);
-    ubii_devices_Component component;
+    ubii_devices_Component component = ubii_devices_Component_init_zero;
     result->status = ubii_reply_for_each(
         reply, ubii_services_ServiceReply_device_tag, ubii_devices_Device_components_tag,
         ubii_devices_Component_fields, &component, print_component, result);

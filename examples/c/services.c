@@ -33,7 +33,7 @@ static void print_services(ubii_node *node, const ubii_reply *reply, void *user)
     (void)user;
     pending--;
     printf("services:\n");
-    ubii_services_Service service;
+    ubii_services_Service service = ubii_services_Service_init_zero;
     ubii_status status =
         ubii_reply_for_each(reply, ubii_services_ServiceReply_service_list_tag, 1,
                             ubii_services_Service_fields, &service, print_service, NULL);
@@ -75,7 +75,7 @@ static void print_clients(ubii_node *node, const ubii_reply *reply, void *user)
     (void)user;
     pending--;
     printf("clients:\n");
-    ubii_clients_Client client;
+    ubii_clients_Client client = ubii_clients_Client_init_zero;
     ubii_status status =
         ubii_reply_for_each(reply, ubii_services_ServiceReply_client_list_tag, 1,
                             ubii_clients_Client_fields, &client, print_client, node);

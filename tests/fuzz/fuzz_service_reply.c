@@ -50,7 +50,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     while (ubii_field_iter_next(&it, &element, &element_size)) {
     }
     size_t checksum = 0;
-    ubii_devices_Component component;
+    ubii_devices_Component component = ubii_devices_Component_init_zero;
     ubii_reply_for_each(&reply, reply.member, ubii_devices_Device_components_tag,
                         ubii_devices_Component_fields, &component, touch_element, &checksum);
     ubii_reply_for_each(&reply, reply.member, 1, ubii_devices_Component_fields, &component,

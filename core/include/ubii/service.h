@@ -76,8 +76,10 @@ UBII_API ubii_status ubii_reply_decode(const ubii_reply *reply, uint32_t expecte
  * elements of a list reply (UBII_SERVICE_SERVICE_LIST's ServiceList, UBII_SERVICE_CLIENT_LIST's
  * ClientList: every list message of the schema repeats its field 1); with
  * ubii_devices_Device_components_tag, a registered device's components. Each is decoded into
- * `element` (a struct of type `fields`, which pb_decode resets first) and handed to `fn`, which
- * returns false to stop. Returns the reply's own status if it failed, UBII_ERR_WRONG_TYPE for
+ * `element`, a struct of type `fields`, and handed to `fn`, which returns false to stop. pb_decode
+ * resets the element's plain fields before each one but keeps its callback fields as they are:
+ * initialise `element` first (e.g. `ubii_devices_Component c = ubii_devices_Component_init_zero`),
+ * or its callbacks are garbage that decoding calls. Returns the reply's own status if it failed, UBII_ERR_WRONG_TYPE for
  * another member than `expected_member`, UBII_ERR_DECODE for malformed bytes (the occurrences
  * before them were handed on), else UBII_OK. No allocation. */
 typedef bool (*ubii_element_fn)(const void *element, void *user);
