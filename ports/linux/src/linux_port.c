@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L /* clock_gettime in strict C99 */
 /* The Linux port's vtable: picks the transport by URL scheme and drives the I/O. */
+#include <errno.h>
 #include <poll.h>
 #include <stdlib.h>
 #include <string.h>
@@ -146,7 +147,7 @@ static bool zmq_message_waiting(ubii_linux_port *port)
             int events = 0;
             size_t length = sizeof events;
             if (sockets[j] != NULL &&
-                zmq_getsockopt(sockets[j], ZMQ_EVENTS, &events, &length) == 0 &&
+                port->zmq_api.getsockopt(sockets[j], ZMQ_EVENTS, &events, &length) == 0 &&
                 (events & ZMQ_POLLIN)) {
                 return true;
             }
@@ -183,6 +184,16 @@ static ubii_status wait_for_io(void *context, int timeout_ms)
         ubii__lws_service(port, zmq_message_waiting(port) ? 0 : timeout_ms);
         return UBII_OK;
     }
+    if (port->zmq_api.handle == NULL) { /* no ZMQ socket: only a wake-up can end the wait */
+        struct pollfd wake = {port->wake_fd, POLLIN, 0};
+        if (poll(&wake, 1, timeout_ms) < 0 && errno != EINTR) {
+            return UBII_ERR_TRANSPORT;
+        }
+        if (wake.revents & POLLIN) {
+            drain_wake(port);
+        }
+        return UBII_OK;
+    }
     zmq_pollitem_t items[2 * UBII_CHANNEL_COUNT + 1];
     int count = 0;
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
@@ -194,7 +205,7 @@ static ubii_status wait_for_io(void *context, int timeout_ms)
     memset(wake, 0, sizeof *wake);
     wake->fd = port->wake_fd;
     wake->events = ZMQ_POLLIN;
-    if (zmq_poll(items, count, timeout_ms) < 0 && zmq_errno() != EINTR) {
+    if (port->zmq_api.poll(items, count, timeout_ms) < 0 && port->zmq_api.errno_() != EINTR) {
         return UBII_ERR_TRANSPORT;
     }
     if (wake->revents & ZMQ_POLLIN) {
@@ -275,11 +286,19 @@ ubii_status ubii_linux_port_create(ubii_linux_port **result, const ubii_linux_po
         free(port);
         return UBII_ERR_TRANSPORT;
     }
-    port->zmq_context = zmq_ctx_new();
-    if (port->zmq_context == NULL) {
-        close(port->wake_fd);
-        free(port);
-        return UBII_ERR_TRANSPORT;
+    if (port->options.zmq_engine == UBII_LINUX_ZMQ_LIBZMQ) {
+        if (!ubii__zmq_library_load(&port->zmq_api, port->last_error, sizeof port->last_error)) {
+            close(port->wake_fd);
+            free(port);
+            return UBII_ERR_UNSUPPORTED; /* libzmq is not installed */
+        }
+        port->zmq_context = port->zmq_api.ctx_new();
+        if (port->zmq_context == NULL) {
+            ubii__zmq_library_unload(&port->zmq_api);
+            close(port->wake_fd);
+            free(port);
+            return UBII_ERR_TRANSPORT;
+        }
     }
     if (!port->options.zmq_only && !ubii__lws_start(port)) {
         ubii_linux_port_destroy(port);
@@ -304,7 +323,10 @@ void ubii_linux_port_destroy(ubii_linux_port *port)
         close_channel(port, (ubii_channel)i);
     }
     ubii__lws_destroy(port);
-    zmq_ctx_term(port->zmq_context);
+    if (port->zmq_context != NULL) {
+        port->zmq_api.ctx_term(port->zmq_context);
+    }
+    ubii__zmq_library_unload(&port->zmq_api);
     close(port->wake_fd);
     free(port);
 }

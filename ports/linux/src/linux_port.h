@@ -7,6 +7,8 @@
 
 #include <zmq.h>
 
+#include "zmq_library.h"
+
 #include "ubii/port_linux.h"
 
 struct lws;
@@ -59,6 +61,7 @@ typedef struct zmq_wakeup {
 } zmq_wakeup;
 
 typedef struct zmq_channel {
+    const ubii__zmq_library *api; /* the port's */
     void *socket;
     void *monitor; /* PAIR socket receiving the socket's connection events */
     zmq_msg_t incoming;
@@ -78,6 +81,7 @@ enum { MAX_ZMQ_WAKEUPS = 2 * UBII_CHANNEL_COUNT };
 
 struct ubii_linux_port {
     ubii_linux_port_options options;
+    ubii__zmq_library zmq_api; /* loaded only for UBII_LINUX_ZMQ_LIBZMQ */
     void *zmq_context;
     uint32_t monitor_serial;
     channel channels[UBII_CHANNEL_COUNT];

@@ -17,7 +17,7 @@ void ubii__lws_adopt_zmq(ubii_linux_port *port, void *socket)
     }
     int fd = -1;
     size_t length = sizeof fd;
-    if (zmq_getsockopt(socket, ZMQ_FD, &fd, &length) != 0) {
+    if (port->zmq_api.getsockopt(socket, ZMQ_FD, &fd, &length) != 0) {
         return;
     }
     for (int i = 0; i < MAX_ZMQ_WAKEUPS; ++i) {
@@ -80,7 +80,7 @@ int ubii__lws_on_zmq_wakeup(struct lws *wsi, enum lws_callback_reasons reason, v
         /* Reading ZMQ_EVENTS lets libzmq consume its signal, so the fd stops being readable. */
         int events = 0;
         size_t length = sizeof events;
-        zmq_getsockopt(wakeup->socket, ZMQ_EVENTS, &events, &length);
+        wakeup->port->zmq_api.getsockopt(wakeup->socket, ZMQ_EVENTS, &events, &length);
     } else if (reason == LWS_CALLBACK_RAW_CLOSE_FILE) {
         lws_set_opaque_user_data(wsi, NULL);
         if (wakeup->socket == NULL) {

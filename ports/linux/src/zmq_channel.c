@@ -12,11 +12,11 @@ static const int monitored_events =
 static void release_messages(zmq_channel *z)
 {
     if (z->holds_incoming) {
-        zmq_msg_close(&z->incoming);
+        z->api->msg_close(&z->incoming);
         z->holds_incoming = false;
     }
     if (z->holds_outgoing) {
-        zmq_msg_close(&z->outgoing);
+        z->api->msg_close(&z->outgoing);
         z->holds_outgoing = false;
     }
 }
@@ -26,19 +26,19 @@ void ubii__zmq_close(channel *ch)
     zmq_channel *z = &ch->zmq;
     release_messages(z);
     if (z->socket != NULL) {
-        zmq_socket_monitor(z->socket, NULL, 0);
-        zmq_close(z->socket);
+        z->api->socket_monitor(z->socket, NULL, 0);
+        z->api->close(z->socket);
         z->socket = NULL;
     }
     if (z->monitor != NULL) {
-        zmq_close(z->monitor);
+        z->api->close(z->monitor);
         z->monitor = NULL;
     }
 }
 
-static bool set_int(void *socket, int option, int value)
+static bool set_int(const ubii__zmq_library *zmq, void *socket, int option, int value)
 {
-    return zmq_setsockopt(socket, option, &value, sizeof value) == 0;
+    return zmq->setsockopt(socket, option, &value, sizeof value) == 0;
 }
 
 ubii_status ubii__zmq_open(ubii_linux_port *port, ubii_channel which, const char *url,
@@ -47,31 +47,33 @@ ubii_status ubii__zmq_open(ubii_linux_port *port, ubii_channel which, const char
     channel *ch = &port->channels[which];
     zmq_channel *z = &ch->zmq;
     memset(z, 0, sizeof *z);
+    z->api = &port->zmq_api;
     bool topic = which == UBII_CHANNEL_TOPIC;
     if (topic && (client_id == NULL || client_id[0] == '\0' || strlen(client_id) > 255)) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
-    z->socket = zmq_socket(port->zmq_context, topic ? ZMQ_DEALER : ZMQ_REQ);
+    z->socket = z->api->socket(port->zmq_context, topic ? ZMQ_DEALER : ZMQ_REQ);
     if (z->socket == NULL) {
         return UBII_ERR_TRANSPORT;
     }
     int64_t max_size = (int64_t)port->options.max_message_size;
     bool configured =
-        set_int(z->socket, ZMQ_LINGER, 0) &&
-        zmq_setsockopt(z->socket, ZMQ_MAXMSGSIZE, &max_size, sizeof max_size) == 0 &&
-        (!topic || zmq_setsockopt(z->socket, ZMQ_ROUTING_ID, client_id, strlen(client_id)) == 0);
+        set_int(z->api, z->socket, ZMQ_LINGER, 0) &&
+        z->api->setsockopt(z->socket, ZMQ_MAXMSGSIZE, &max_size, sizeof max_size) == 0 &&
+        (!topic ||
+         z->api->setsockopt(z->socket, ZMQ_ROUTING_ID, client_id, strlen(client_id)) == 0);
     char endpoint[64];
     snprintf(endpoint, sizeof endpoint, "inproc://ubii-monitor-%p-%u", (void *)port,
              ++port->monitor_serial);
-    if (configured && zmq_socket_monitor(z->socket, endpoint, monitored_events) == 0) {
-        z->monitor = zmq_socket(port->zmq_context, ZMQ_PAIR);
-        configured = z->monitor != NULL && set_int(z->monitor, ZMQ_LINGER, 0) &&
-                     zmq_connect(z->monitor, endpoint) == 0;
+    if (configured && z->api->socket_monitor(z->socket, endpoint, monitored_events) == 0) {
+        z->monitor = z->api->socket(port->zmq_context, ZMQ_PAIR);
+        configured = z->monitor != NULL && set_int(z->api, z->monitor, ZMQ_LINGER, 0) &&
+                     z->api->connect(z->monitor, endpoint) == 0;
     } else {
         configured = false;
     }
-    if (!configured || zmq_connect(z->socket, url) != 0) {
-        ubii_status status = zmq_errno() == EINVAL || zmq_errno() == EPROTONOSUPPORT
+    if (!configured || z->api->connect(z->socket, url) != 0) {
+        ubii_status status = z->api->errno_() == EINVAL || z->api->errno_() == EPROTONOSUPPORT
                                  ? UBII_ERR_INVALID_ARGUMENT
                                  : UBII_ERR_TRANSPORT;
         ubii__zmq_close(ch);
@@ -90,23 +92,23 @@ void ubii__zmq_update_state(channel *ch)
     }
     for (;;) {
         zmq_msg_t frame;
-        zmq_msg_init(&frame);
-        if (zmq_msg_recv(&frame, z->monitor, ZMQ_DONTWAIT) < 0) {
-            zmq_msg_close(&frame);
+        z->api->msg_init(&frame);
+        if (z->api->msg_recv(&frame, z->monitor, ZMQ_DONTWAIT) < 0) {
+            z->api->msg_close(&frame);
             return;
         }
         uint16_t event = 0;
-        if (zmq_msg_size(&frame) >= sizeof event) {
-            memcpy(&event, zmq_msg_data(&frame), sizeof event);
+        if (z->api->msg_size(&frame) >= sizeof event) {
+            memcpy(&event, z->api->msg_data(&frame), sizeof event);
         }
-        while (zmq_msg_more(&frame)) {
-            zmq_msg_close(&frame);
-            zmq_msg_init(&frame);
-            if (zmq_msg_recv(&frame, z->monitor, ZMQ_DONTWAIT) < 0) {
+        while (z->api->msg_more(&frame)) {
+            z->api->msg_close(&frame);
+            z->api->msg_init(&frame);
+            if (z->api->msg_recv(&frame, z->monitor, ZMQ_DONTWAIT) < 0) {
                 break;
             }
         }
-        zmq_msg_close(&frame);
+        z->api->msg_close(&frame);
         if (event == ZMQ_EVENT_HANDSHAKE_SUCCEEDED && ch->state == UBII_CHANNEL_CONNECTING) {
             ch->state = UBII_CHANNEL_OPEN;
         } else if (event == ZMQ_EVENT_DISCONNECTED ||
@@ -123,14 +125,14 @@ ubii_status ubii__zmq_send_begin(ubii_linux_port *port, channel *ch, size_t size
         return UBII_ERR_TOO_LARGE;
     }
     if (z->holds_outgoing) {
-        zmq_msg_close(&z->outgoing);
+        z->api->msg_close(&z->outgoing);
         z->holds_outgoing = false;
     }
-    if (zmq_msg_init_size(&z->outgoing, size) != 0) {
+    if (z->api->msg_init_size(&z->outgoing, size) != 0) {
         return UBII_ERR_TRANSPORT;
     }
     z->holds_outgoing = true;
-    *buffer = zmq_msg_data(&z->outgoing);
+    *buffer = z->api->msg_data(&z->outgoing);
     return UBII_OK;
 }
 
@@ -141,9 +143,9 @@ ubii_status ubii__zmq_send_commit(channel *ch)
     if (!z->holds_outgoing) {
         return UBII_ERR_STATE;
     }
-    if (zmq_msg_send(&z->outgoing, z->socket, ZMQ_DONTWAIT) < 0) {
-        int error = zmq_errno();
-        zmq_msg_close(&z->outgoing);
+    if (z->api->msg_send(&z->outgoing, z->socket, ZMQ_DONTWAIT) < 0) {
+        int error = z->api->errno_();
+        z->api->msg_close(&z->outgoing);
         z->holds_outgoing = false;
         return error == EAGAIN ? UBII_ERR_WOULD_BLOCK : UBII_ERR_TRANSPORT;
     }
@@ -151,14 +153,14 @@ ubii_status ubii__zmq_send_commit(channel *ch)
     return UBII_OK;
 }
 
-static void discard_remaining_parts(void *socket, zmq_msg_t *frame)
+static void discard_remaining_parts(const ubii__zmq_library *zmq, void *socket, zmq_msg_t *frame)
 {
-    while (zmq_msg_more(frame)) {
+    while (zmq->msg_more(frame)) {
         zmq_msg_t rest;
-        zmq_msg_init(&rest);
-        int received = zmq_msg_recv(&rest, socket, ZMQ_DONTWAIT);
-        bool more = received >= 0 && zmq_msg_more(&rest);
-        zmq_msg_close(&rest);
+        zmq->msg_init(&rest);
+        int received = zmq->msg_recv(&rest, socket, ZMQ_DONTWAIT);
+        bool more = received >= 0 && zmq->msg_more(&rest);
+        zmq->msg_close(&rest);
         if (!more) {
             return;
         }
@@ -171,32 +173,32 @@ ubii_status ubii__zmq_receive(ubii_linux_port *port, ubii_channel which, const u
 {
     zmq_channel *z = &port->channels[which].zmq;
     if (z->holds_incoming) {
-        zmq_msg_close(&z->incoming);
+        z->api->msg_close(&z->incoming);
         z->holds_incoming = false;
     }
     for (;;) {
-        zmq_msg_init(&z->incoming);
-        if (zmq_msg_recv(&z->incoming, z->socket, ZMQ_DONTWAIT) < 0) {
-            zmq_msg_close(&z->incoming);
+        z->api->msg_init(&z->incoming);
+        if (z->api->msg_recv(&z->incoming, z->socket, ZMQ_DONTWAIT) < 0) {
+            z->api->msg_close(&z->incoming);
             return UBII_ERR_WOULD_BLOCK;
         }
-        if (which == UBII_CHANNEL_TOPIC && zmq_msg_size(&z->incoming) == 0 &&
-            zmq_msg_more(&z->incoming)) {
-            zmq_msg_close(&z->incoming);
-            zmq_msg_init(&z->incoming);
-            if (zmq_msg_recv(&z->incoming, z->socket, ZMQ_DONTWAIT) < 0) {
-                zmq_msg_close(&z->incoming);
+        if (which == UBII_CHANNEL_TOPIC && z->api->msg_size(&z->incoming) == 0 &&
+            z->api->msg_more(&z->incoming)) {
+            z->api->msg_close(&z->incoming);
+            z->api->msg_init(&z->incoming);
+            if (z->api->msg_recv(&z->incoming, z->socket, ZMQ_DONTWAIT) < 0) {
+                z->api->msg_close(&z->incoming);
                 return UBII_ERR_WOULD_BLOCK;
             }
         }
-        if (zmq_msg_more(&z->incoming)) { /* not a shape the master sends: skip it whole */
-            discard_remaining_parts(z->socket, &z->incoming);
-            zmq_msg_close(&z->incoming);
+        if (z->api->msg_more(&z->incoming)) { /* not a shape the master sends: skip it whole */
+            discard_remaining_parts(z->api, z->socket, &z->incoming);
+            z->api->msg_close(&z->incoming);
             continue;
         }
         z->holds_incoming = true;
-        *data = zmq_msg_data(&z->incoming);
-        *size = zmq_msg_size(&z->incoming);
+        *data = z->api->msg_data(&z->incoming);
+        *size = z->api->msg_size(&z->incoming);
         return UBII_OK;
     }
 }
@@ -227,7 +229,7 @@ int ubii__zmq_fds(channel *ch, ubii_pollfd *fds, int capacity)
         }
         int fd = -1;
         size_t length = sizeof fd;
-        if (zmq_getsockopt(sockets[i], ZMQ_FD, &fd, &length) == 0) {
+        if (ch->zmq.api->getsockopt(sockets[i], ZMQ_FD, &fd, &length) == 0) {
             if (count < capacity) {
                 fds[count].fd = fd;
                 fds[count].events = 1; /* POLLIN: ZMQ_FD signals readiness of either direction */
