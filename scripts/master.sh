@@ -32,7 +32,9 @@ prepare() {
   mkdir -p "$state/home"
   local https='"enabled": false'
   if [ "${UBII_MASTER_TLS:-0}" = 1 ]; then
+    # A client checks an IP address against the subjectAltName only (never the CN).
     openssl req -x509 -newkey rsa:2048 -nodes -days 2 -subj /CN=127.0.0.1 \
+      -addext "subjectAltName=IP:127.0.0.1,DNS:localhost" \
       -keyout "$state/key.pem" -out "$state/cert.pem" >/dev/null 2>&1
     openssl rsa -in "$state/key.pem" -pubout -out "$state/public.pem" >/dev/null 2>&1
     https="\"enabled\": true, \"pathCert\": \"$state/cert.pem\", \"pathPrivateKey\": \"$state/key.pem\", \"pathPublicKey\": \"$state/public.pem\""

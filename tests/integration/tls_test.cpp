@@ -1,6 +1,7 @@
 // WebSocket topic data over TLS (wss://) against a master serving a self-signed certificate (the
-// `master_tls` fixture): accepted when the application allows self-signed certificates, refused
-// (and reported, not hung on) when it does not.
+// `master_tls` fixture): accepted when the application allows self-signed certificates or names
+// the certificate as the one to trust (ca_file), refused (and reported, not hung on) when it does
+// neither, or when the certificate names another host than the URL.
 #include <algorithm>
 #include <cstring>
 
@@ -32,6 +33,31 @@ TEST(Tls, SecureWebSocketCarriesRecordsWhenSelfSignedIsAllowed)
     EXPECT_EQ(
         std::string(node.received().front().value.begin(), node.received().front().value.end()),
         "secret");
+}
+
+// The master's self-signed certificate given as the one to trust: accepted with every check on.
+TEST(Tls, ACertificateFromTheGivenCaIsAccepted)
+{
+    TestNode node("tls-trusted", secure_topics, service, Tls::trust_test_ca);
+    ASSERT_TRUE(node.wait_ready()) << node.transport_error();
+    const std::string topic = unique_topic("/tls-trusted");
+    node.collect(topic);
+    ASSERT_TRUE(node.poll_until([&] {
+        ubii_publish_string(node.get(), topic.c_str(), "trusted", 7);
+        return !node.received().empty();
+    }));
+}
+
+// The same trusted certificate, reached under another address: it names 127.0.0.1, not the
+// 127.0.0.2 the URL gives (the same loopback master), so the host name check refuses it.
+TEST(Tls, ACertificateForAnotherHostIsRefused)
+{
+    const std::string other_host = "wss://127.0.0.2:" + std::to_string(tls_port_base + 3);
+    TestNode node("tls-wrong-host", other_host, service, Tls::trust_test_ca);
+    ASSERT_TRUE(node.start_and_wait_failed(1, std::chrono::seconds(10)));
+    // Refused in the TLS handshake (libwebsockets logs "IP address mismatch"), not unreachable.
+    EXPECT_NE(std::string(node.transport_error()).find("SSL"), std::string::npos)
+        << node.transport_error();
 }
 
 TEST(Tls, UntrustedCertificateIsRefusedAndReported)

@@ -12,8 +12,9 @@
 namespace ubii_test
 {
 
-// How the port handles wss:// and https:// (the embedded port has no TLS).
-enum class Tls { off, strict, allow_self_signed };
+// How the port handles wss:// and https:// (the embedded port has no TLS). trust_test_ca: only the
+// certificates in the file UBII_TEST_TLS_CA names (the TLS master's own, tests/CMakeLists.txt).
+enum class Tls { off, strict, allow_self_signed, trust_test_ca };
 
 class TestPort
 {

@@ -19,6 +19,12 @@ TestPort::TestPort(Tls tls) : impl_(std::make_unique<Impl>())
     options.libwebsockets_log_level = 1;  // LLL_ERR: no notice per HTTP transaction
     options.enable_tls = tls != Tls::off; // only the TLS tests need it
     options.allow_self_signed = tls == Tls::allow_self_signed;
+    if (tls == Tls::trust_test_ca) {
+        options.ca_file = std::getenv("UBII_TEST_TLS_CA");
+        if (options.ca_file == nullptr) {
+            throw std::runtime_error("Tls::trust_test_ca needs UBII_TEST_TLS_CA");
+        }
+    }
     // The suite runs once per tcp:// engine (tests/CMakeLists.txt): the default, then libzmq.
     const char *engine = std::getenv("UBII_TEST_ZMQ_ENGINE");
     if (engine != nullptr && std::strcmp(engine, "libzmq") == 0) {

@@ -30,6 +30,7 @@ bool ubii__lws_start(ubii_linux_port *port)
     info.protocols = protocols;
     /* TLS needs lws's OpenSSL set-up, which is process-wide: see enable_tls in port_linux.h. */
     info.options = port->options.enable_tls ? LWS_SERVER_OPTION_DO_SSL_GLOBAL_INIT : 0;
+    info.client_ssl_ca_filepath = port->options.enable_tls ? port->options.ca_file : NULL;
     info.gid = -1;
     info.uid = -1;
     /* lws reads a socket into this buffer, once per service pass (4 KB by default). */

@@ -64,6 +64,10 @@ typedef struct ubii_linux_port_options {
     bool zmq_only;
     /* UBII_LINUX_ZMQ_IN_THREAD needs libwebsockets: not with zmq_only. */
     ubii_linux_zmq_engine zmq_engine;
+    /* TLS: a PEM file of the certificates to trust (a CA's, or a master's self-signed one) instead
+     * of the system's store. The master's certificate must then chain to one of them and name the
+     * URL's host (its subject's CN or a subjectAltName); allow_self_signed skips both checks. */
+    const char *ca_file;
 } ubii_linux_port_options;
 
 /* Ends the port's current or next wait at once: the one call that may come from any thread (or a
@@ -74,7 +78,10 @@ UBII_API void ubii_linux_port_wake(ubii_linux_port *port);
 /* A short English description of the port's last transport failure ("" if none). */
 UBII_API const char *ubii_linux_port_last_error(const ubii_linux_port *port);
 
-/* Creates a port; `options` may be NULL for the defaults. UBII_ERR_TRANSPORT if libzmq fails. */
+/* Creates a port; `options` may be NULL for the defaults. UBII_ERR_UNSUPPORTED for the libzmq
+ * engine without libzmq installed, UBII_ERR_TRANSPORT if libzmq or libwebsockets fail to start
+ * (e.g. an unreadable ca_file); ubii_linux_port_last_error is unavailable then: nothing is
+ * returned. */
 UBII_API ubii_status ubii_linux_port_create(ubii_linux_port **port,
                                             const ubii_linux_port_options *options);
 /* The port as a node runs on it; valid until ubii_linux_port_destroy. */
