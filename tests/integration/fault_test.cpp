@@ -152,6 +152,36 @@ TEST_P(TopicFaults, DelayedTrafficArrivesCompleteAndInOrder)
     EXPECT_FALSE(saw(node, UBII_STATE_RECONNECTING));
 }
 
+// A half-open connection: the proxy plays a master that PINGs, then stops forwarding while
+// keeping both sockets open. Neither socket can tell; the node's PING watchdog must, within
+// ping_timeout_ms, and then reconnect.
+TEST_P(TopicFaults, AHalfOpenConnectionIsDetectedWithinThePingWindow)
+{
+    FaultProxy proxy(proxy_port(4, GetParam()), topic_port(GetParam()));
+    TestNode node("fault-half-open", url(GetParam(), proxy.port()));
+    node.config().ping_timeout_ms = 1000;
+    ASSERT_TRUE(start(node)) << node.transport_error();
+    proxy.send_pings(GetParam() == Transport::zmq ? FaultProxy::Framing::zmtp
+                                                  : FaultProxy::Framing::websocket,
+                     200ms);
+    ubii_stats stats{};
+    ASSERT_TRUE(node.poll_until(
+        [&] {
+            ubii_node_stats(node.get(), &stats);
+            return stats.pings >= 2;
+        },
+        5s))
+        << "the node answered no PING";
+    proxy.stall();
+    const auto stalled = std::chrono::steady_clock::now();
+    ASSERT_TRUE(node.poll_until([&] { return saw(node, UBII_STATE_RECONNECTING); }, 10s))
+        << "the half-open connection went unnoticed";
+    const auto noticed = std::chrono::steady_clock::now() - stalled;
+    EXPECT_LT(noticed, 2500ms) << "later than the PING window (1000 ms) allows";
+    proxy.pass();
+    EXPECT_TRUE(round_trip(node, 2)) << "no record after reconnecting";
+}
+
 INSTANTIATE_TEST_SUITE_P(Transports, TopicFaults,
                          ::testing::Values(Transport::zmq, Transport::websocket),
                          [](const auto &test) { return name_of(test.param); });

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstring>
 #include <deque>
+#include <iterator>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -76,6 +77,10 @@ struct FaultProxy::Impl {
     bool cut = false;
     bool truncate_next = false;
     bool corrupt_next = false;
+    bool pinging = false;
+    FaultProxy::Framing ping_framing = FaultProxy::Framing::zmtp;
+    std::chrono::milliseconds ping_every{0};
+    Clock::time_point next_ping;
 };
 
 FaultProxy::FaultProxy(uint16_t listen_port, uint16_t upstream_port)
@@ -142,6 +147,15 @@ void FaultProxy::corrupt_next_from_master()
     impl_->corrupt_next = true;
 }
 
+void FaultProxy::send_pings(Framing protocol, std::chrono::milliseconds every)
+{
+    std::lock_guard<std::mutex> lock(impl_->mutex);
+    impl_->pinging = true;
+    impl_->ping_framing = protocol;
+    impl_->ping_every = every;
+    impl_->next_ping = Clock::now();
+}
+
 void FaultProxy::run()
 {
     auto &connections = impl_->connections;
@@ -174,6 +188,25 @@ void FaultProxy::run()
             continue;
 
         const auto now = Clock::now();
+        {
+            // The master's keep-alive: ZMTP [empty delimiter, "PING"] as its ROUTER sends it, or
+            // an unmasked WebSocket text frame "PING".
+            static const uint8_t zmtp_ping[] = {0x01, 0x00, 0x00, 0x04, 'P', 'I', 'N', 'G'};
+            static const uint8_t websocket_ping[] = {0x81, 0x04, 'P', 'I', 'N', 'G'};
+            std::lock_guard<std::mutex> lock(impl_->mutex);
+            if (impl_->pinging && !stalled && now >= impl_->next_ping) {
+                impl_->next_ping = now + impl_->ping_every;
+                const bool zmtp = impl_->ping_framing == Framing::zmtp;
+                for (auto &connection : connections) {
+                    if (zmtp)
+                        connection.to_node.push_back(
+                            {{std::begin(zmtp_ping), std::end(zmtp_ping)}, now});
+                    else
+                        connection.to_node.push_back(
+                            {{std::begin(websocket_ping), std::end(websocket_ping)}, now});
+                }
+            }
+        }
         const size_t polled = connections.size(); // a connection accepted below has no pollfd yet
         for (size_t i = 0; i < polled && !stalled; ++i) {
             Connection &connection = connections[i];

@@ -43,6 +43,12 @@ class FaultProxy
     // Inverts every byte of the next chunk from the master, then forwards it.
     void corrupt_next_from_master();
 
+    // Plays a master that keeps the connection alive (the npm master never does): every `every`,
+    // while not stalled, a PING goes to each connection as `protocol` frames it. Only on an idle,
+    // open connection: a PING dropped into the middle of a frame would break the stream.
+    enum class Framing { zmtp, websocket };
+    void send_pings(Framing protocol, std::chrono::milliseconds every);
+
     // Connections accepted so far (a reconnecting node makes a new one).
     int accepted() const
     {
