@@ -6,10 +6,14 @@
 // (other path or method: 404; wrong Content-Type, no Host, wrong Content-Length: 400) makes the
 // node's test fail, since no ServiceReply comes back. POST /services/binary?reply=chunked answers
 // the same with Transfer-Encoding: chunked (small chunks and a trailer), as an HTTP server may.
-//   node http_services_bridge.js LISTEN_PORT MASTER_SERVICE_PORT ZEROMQ_MODULE_DIR
+// With CERT_PEM and KEY_PEM it serves HTTPS instead, on every loopback address (the TLS tests
+// reach it as 127.0.0.2 too, a host its certificate does not name).
+//   node http_services_bridge.js LISTEN_PORT MASTER_SERVICE_PORT ZEROMQ_MODULE_DIR [CERT_PEM KEY_PEM]
 'use strict';
+const fs = require('fs');
 const http = require('http');
-const [listenPort, masterPort, zeromqDir] = process.argv.slice(2);
+const https = require('https');
+const [listenPort, masterPort, zeromqDir, certFile, keyFile] = process.argv.slice(2);
 const zmq = require(zeromqDir);
 
 const socket = zmq.socket('req');
@@ -31,7 +35,7 @@ socket.on('message', (reply) => {
   if (waiting.length > 0) socket.send(waiting[0].body);
 });
 
-const server = http.createServer((request, response) => {
+const handle = (request, response) => {
   const chunks = [];
   request.on('data', (chunk) => chunks.push(chunk));
   request.on('end', () => {
@@ -49,6 +53,10 @@ const server = http.createServer((request, response) => {
     waiting.push({ body, response, chunked });
     if (waiting.length === 1) socket.send(body);
   });
-});
-server.listen(Number(listenPort), '127.0.0.1', () => console.log(`bridge ready on ${listenPort}`));
+};
+const server = certFile
+  ? https.createServer({ cert: fs.readFileSync(certFile), key: fs.readFileSync(keyFile) }, handle)
+  : http.createServer(handle);
+server.listen(Number(listenPort), certFile ? '0.0.0.0' : '127.0.0.1',
+  () => console.log(`bridge ready on ${listenPort}`));
 process.on('SIGTERM', () => process.exit(0));

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Starts or stops http_services_bridge.js in the background (CTest fixture).
 #   http_services_bridge.sh start STATE_DIR LISTEN_PORT MASTER_SERVICE_PORT ZEROMQ_MODULE_DIR
+#                                 [CERT_PEM KEY_PEM]   (HTTPS)
 #   http_services_bridge.sh stop STATE_DIR
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -8,7 +9,7 @@ state=${2:?}
 mkdir -p "$state"
 case "$1" in
   start)
-    node "$here/http_services_bridge.js" "$3" "$4" "$5" </dev/null >"$state/bridge.log" 2>&1 &
+    node "$here/http_services_bridge.js" "$3" "$4" "$5" "${@:6}" </dev/null >"$state/bridge.log" 2>&1 &
     echo $! >"$state/bridge.pid"
     for _ in $(seq 100); do
       grep -q 'bridge ready' "$state/bridge.log" && exit 0

@@ -60,6 +60,38 @@ TEST(Tls, ACertificateForAnotherHostIsRefused)
         << node.transport_error();
 }
 
+// Binary services over HTTPS (the contract bridge on 8310 with the master's certificate), topic
+// data over wss://, the certificate trusted through ca_file: a service call is answered.
+TEST(Tls, HttpsServicesWithTheGivenCaAreAnswered)
+{
+    TestNode node("https-trusted", secure_topics, "https://127.0.0.1:8310/services/binary",
+                  Tls::trust_test_ca);
+    ASSERT_TRUE(node.wait_ready()) << node.transport_error();
+    struct Answer {
+        bool done = false;
+        ubii_status status = UBII_ERR_STATE;
+    } answer;
+    ASSERT_EQ(ubii_call_topic(
+                  node.get(), UBII_SERVICE_TOPIC_LIST, 0,
+                  [](ubii_node *, const ubii_reply *reply, void *user) {
+                      *static_cast<Answer *>(user) = Answer{true, reply->status};
+                  },
+                  &answer),
+              UBII_OK);
+    ASSERT_TRUE(node.poll_until([&] { return answer.done; }));
+    EXPECT_EQ(answer.status, UBII_OK);
+}
+
+// The same HTTPS endpoint reached as 127.0.0.2, a host its certificate does not name.
+TEST(Tls, HttpsServicesOfAnotherHostAreRefused)
+{
+    TestNode node("https-wrong-host", secure_topics, "https://127.0.0.2:8310/services/binary",
+                  Tls::trust_test_ca);
+    ASSERT_TRUE(node.start_and_wait_failed(1, std::chrono::seconds(10)));
+    EXPECT_NE(std::string(node.transport_error()).find("SSL"), std::string::npos)
+        << node.transport_error();
+}
+
 TEST(Tls, UntrustedCertificateIsRefusedAndReported)
 {
     TestNode node("tls-refused", secure_topics, service, Tls::strict);

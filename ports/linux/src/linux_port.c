@@ -48,8 +48,9 @@ static ubii_status open_channel(void *context, ubii_channel which, const char *u
         return UBII_ERR_INVALID_ARGUMENT;
     }
     close_channel(port, which);
+    /* last_error stays: a channel reopened while the node gives up (a REQ socket is reset when its
+     * call is cancelled) must not wipe the reason it gave up for. */
     channel *ch = &port->channels[which];
-    port->last_error[0] = '\0';
     if (starts_with(url, "tcp://") && port->options.zmq_engine == UBII_LINUX_ZMQ_LIBZMQ) {
         ubii_status status = ubii__zmq_open(port, which, url, client_id);
         if (status == UBII_OK) {

@@ -75,7 +75,8 @@ typedef struct ubii_linux_port_options {
  * wake-up is an eventfd among the port's pollfds, so an external loop wakes too. */
 UBII_API void ubii_linux_port_wake(ubii_linux_port *port);
 
-/* A short English description of the port's last transport failure ("" if none). */
+/* A short English description of the port's last transport failure ("" if none yet); it stays
+ * until the next failure replaces it. */
 UBII_API const char *ubii_linux_port_last_error(const ubii_linux_port *port);
 
 /* Creates a port; `options` may be NULL for the defaults. UBII_ERR_UNSUPPORTED for the libzmq
