@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Idle footprint: a connected, subscribed, idle node's memory, read from /proc/PID/smaps after it
-# has idled IDLE seconds, for libubii (in-thread ZMTP, libzmq, WebSocket) and the official Node.js
-# node, each against a freshly started local master. Prints RSS, PSS and private memory per node,
+# has idled IDLE seconds, for libubii (Linux port: in-thread ZMTP, libzmq, WebSocket; embedded
+# port: ZMTP) and the official Node.js node, each against a freshly started local master. Prints RSS, PSS and private memory per node,
 # then where libubii's in-thread node's resident memory lies (its own binary, each library, heap,
 # stacks, other anonymous memory). Asserts nothing.
 #   bench/footprint_idle.sh [IDLE]    default 3 s
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="${UBII_BUILD_DIR:-$root/build}/bench"
+embedded_build="${UBII_BUILD_DIR:-$root/build}/bench-embedded"
 cache=${UBII_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/libubii}
 idle=${1:-3}
 
@@ -16,10 +17,13 @@ idle=${1:-3}
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DUBII_BUILD_BENCH=ON -DUBII_BUILD_TESTS=OFF \
   -DUBII_BUILD_EXAMPLES=OFF >/dev/null
 cmake --build "$build" -j "$(nproc)" --target idle_node >/dev/null
+cmake -S "$root" -B "$embedded_build" -DCMAKE_BUILD_TYPE=Release -DUBII_PORT=embedded \
+  -DUBII_BUILD_BENCH=ON -DUBII_BUILD_TESTS=OFF -DUBII_BUILD_EXAMPLES=OFF >/dev/null
+cmake --build "$embedded_build" -j "$(nproc)" --target idle_node >/dev/null
 
 exec "$root/scripts/private-net.sh" bash -c '
   set -euo pipefail
-  root=$1 build=$2 cache=$3 idle=$4
+  root=$1 build=$2 cache=$3 idle=$4 embedded_build=$5
   state=$(mktemp -d)
   trap "\"$root/scripts/master.sh\" stop \"\$state\" >/dev/null 2>&1; rm -rf \"\$state\"" EXIT
   client="$cache/npm/node-client/node_modules/@tum-far/ubii-node-nodejs"
@@ -58,8 +62,9 @@ exec "$root/scripts/private-net.sh" bash -c '
   measure libubii-zmq "$build/bench/idle_node" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103
   measure libubii-zmq-libzmq "$build/bench/idle_node" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103 libzmq
   measure libubii-websocket "$build/bench/idle_node" tcp://127.0.0.1:8101 ws://127.0.0.1:8104
+  measure libubii-embedded-zmtp "$embedded_build/bench/idle_node" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103
   measure nodejs-zmq node "$root/bench/idle_nodejs.js" "$client" tcp://127.0.0.1:8101 tcp://127.0.0.1:8103
   echo
   echo "libubii-zmq by mapping (kB resident, kB private):"
   cat "$state/by_mapping"
-' footprint "$root" "$build" "$cache" "$idle"
+' footprint "$root" "$build" "$cache" "$idle" "$embedded_build"

@@ -1,15 +1,21 @@
 /* idle_node: a node that connects, subscribes to one topic, prints "idle_node: ready" and then
  * only polls (answering PINGs) until SIGTERM or SIGINT: what bench/footprint_idle.sh measures.
  *
- *   idle_node SERVICE_URL TOPIC_URL [libzmq]    libzmq: tcp:// through libzmq, not in-thread */
+ *   idle_node SERVICE_URL TOPIC_URL [libzmq]    libzmq: tcp:// through libzmq, not in-thread
+ * Built for either port: on the embedded one (UBII_BENCH_EMBEDDED) the third argument is ignored.
+ */
 #define _POSIX_C_SOURCE 200809L
 
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "ubii/port_linux.h"
 #include "ubii/ubii.h"
+#ifdef UBII_BENCH_EMBEDDED
+#include "ubii/port_embedded.h"
+#else
+#include "ubii/port_linux.h"
+#endif
 
 static volatile sig_atomic_t stopping = 0;
 
@@ -37,6 +43,14 @@ int main(int argc, char **argv)
     action.sa_handler = on_signal;
     sigaction(SIGTERM, &action, NULL);
     sigaction(SIGINT, &action, NULL);
+#ifdef UBII_BENCH_EMBEDDED
+    static ubii_embedded_port embedded_port;
+    if (ubii_embedded_port_init(&embedded_port, ubii_embedded_posix_platform()) != UBII_OK) {
+        fprintf(stderr, "idle_node: no embedded port\n");
+        return 1;
+    }
+    ubii_port port_handle = ubii_embedded_port_get(&embedded_port);
+#else
     ubii_linux_port_options options = {0};
     options.libwebsockets_log_level = 1;
     if (argc > 3 && strcmp(argv[3], "libzmq") == 0) {
@@ -47,13 +61,15 @@ int main(int argc, char **argv)
         fprintf(stderr, "idle_node: no Linux port\n");
         return 1;
     }
+    ubii_port port_handle = ubii_linux_port_get(port);
+#endif
     ubii_config config;
     ubii_config_init(&config);
     config.service_url = argv[1];
     config.topic_url = argv[2];
     config.client_name = "libubii-idle";
     static ubii_node node;
-    if (ubii_node_init(&node, sizeof node, &config, ubii_linux_port_get(port)) != UBII_OK ||
+    if (ubii_node_init(&node, sizeof node, &config, port_handle) != UBII_OK ||
         ubii_subscribe(&node, "/libubii/idle", on_record, NULL, NULL) != UBII_OK ||
         ubii_node_start(&node) != UBII_OK) {
         fprintf(stderr, "idle_node: invalid arguments\n");
@@ -70,6 +86,10 @@ int main(int argc, char **argv)
         }
     }
     ubii_node_stop_wait(&node, 2000);
+#ifdef UBII_BENCH_EMBEDDED
+    ubii_embedded_port_close(&embedded_port);
+#else
     ubii_linux_port_destroy(port);
+#endif
     return 0;
 }
