@@ -61,7 +61,10 @@ if [ -f "$prefix/include/ubii/port_linux.h" ]; then
   "$work/consumer_port_static"
   cc -std=c99 -Wall -Werror -shared -fPIC -DCONSUMER_PLUGIN "$here/consumer_port.c" $static_flags \
     -o "$work/consumer_plugin.so"
-  cc -std=c99 -Wall -Werror "$here/consumer_plugin_host.c" -ldl -o "$work/consumer_plugin_host"
+  # The host links what the plugin's flags link too: in a sanitized build the sanitizer runtime
+  # must be the process's own, not come with a plugin.
+  cc -std=c99 -Wall -Werror "$here/consumer_plugin_host.c" $static_flags -ldl \
+    -o "$work/consumer_plugin_host"
   "$work/consumer_plugin_host" "$work/consumer_plugin.so"
   for binary in consumer_port_static consumer_plugin.so; do
     if ldd "$work/$binary" | grep -F libubii >/dev/null; then
