@@ -1,8 +1,10 @@
 #include "zmtp_wire.h"
 
+#include "ubii/config.h"
+
 #include <string.h>
 
-enum { FLAG_MORE = 0x01, FLAG_LONG = 0x02, FLAG_COMMAND = 0x04 };
+enum { FLAG_MORE = 0x01, FLAG_LONG = 0x02, FLAG_COMMAND = 0x04, FLAGS_RESERVED = 0xF8 };
 
 static bool put_property(uint8_t *out, size_t capacity, size_t *used, const char *name,
                          const char *value)
@@ -136,8 +138,17 @@ ubii_zmtp_unit ubii__zmtp_next(ubii_zmtp_step *step, const uint8_t *bytes, size_
         uint8_t flags;
         size_t body;
         uint64_t frame_size;
+        /* Bytes no ZMTP peer sends: the stream is broken (corrupted, or not ZMTP), and a size
+         * read from it would have the receiver skip whatever follows. Seen in the first byte. */
+        if (used > at && ((bytes[at] & FLAGS_RESERVED) ||
+                          ((bytes[at] & FLAG_COMMAND) && (bytes[at] & FLAG_MORE)))) {
+            return fail(found, "ZMTP frame with invalid flags: the stream is corrupt");
+        }
         if (!read_frame(bytes, used, at, &flags, &body, &frame_size)) {
             return UBII_ZMTP_NEED_MORE;
+        }
+        if (frame_size > UBII_MAX_MESSAGE_SIZE) {
+            return fail(found, "ZMTP frame larger than any message (UBII_MAX_MESSAGE_SIZE)");
         }
         if (frame_size > max_message) {
             found->payload = body;
