@@ -64,36 +64,30 @@ void ubii__parse_reply(const uint8_t *bytes, size_t size, ubii_reply *reply,
     }
 }
 
+/* The reply's own failure, UBII_ERR_WRONG_TYPE for another member, else UBII_OK. */
+static ubii_status member_of(const ubii_reply *reply, uint32_t expected_member)
+{
+    if (reply->status != UBII_OK) {
+        return reply->status;
+    }
+    return reply->member == expected_member ? UBII_OK : UBII_ERR_WRONG_TYPE;
+}
+
 ubii_status ubii_reply_decode(const ubii_reply *reply, uint32_t expected_member,
                               const pb_msgdesc_t *fields, void *message)
 {
     if (reply == NULL || fields == NULL || message == NULL) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
-    if (reply->status != UBII_OK) {
-        return reply->status;
-    }
-    if (reply->member != expected_member) {
-        return UBII_ERR_WRONG_TYPE;
+    ubii_status status = member_of(reply, expected_member);
+    if (status != UBII_OK) {
+        return status;
     }
     pb_istream_t stream = pb_istream_from_buffer(reply->bytes, reply->size);
     return pb_decode(&stream, fields, message) ? UBII_OK : UBII_ERR_DECODE;
 }
 
 enum { LIST_ELEMENTS = 1 }; /* every list message of the schema repeats its field 1 */
-
-static ubii_status occurrences(const ubii_reply *reply, uint32_t expected_member, uint32_t field,
-                               ubii_field_iter *it)
-{
-    if (reply->status != UBII_OK) {
-        return reply->status;
-    }
-    if (reply->member != expected_member) {
-        return UBII_ERR_WRONG_TYPE;
-    }
-    ubii_field_iter_init(it, reply->bytes, reply->size, field);
-    return UBII_OK;
-}
 
 ubii_status ubii_reply_for_each(const ubii_reply *reply, uint32_t expected_member,
                                 uint32_t repeated_field, const pb_msgdesc_t *fields, void *element,
@@ -102,11 +96,15 @@ ubii_status ubii_reply_for_each(const ubii_reply *reply, uint32_t expected_membe
     if (reply == NULL || repeated_field == 0 || fields == NULL || element == NULL || fn == NULL) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
+    ubii_status status = member_of(reply, expected_member);
+    if (status != UBII_OK) {
+        return status;
+    }
     ubii_field_iter it;
-    ubii_status status = occurrences(reply, expected_member, repeated_field, &it);
+    ubii_field_iter_init(&it, reply->bytes, reply->size, repeated_field);
     const uint8_t *bytes;
     size_t size;
-    while (status == UBII_OK && ubii_field_iter_next(&it, &bytes, &size)) {
+    while (ubii_field_iter_next(&it, &bytes, &size)) {
         pb_istream_t stream = pb_istream_from_buffer(bytes, size);
         if (!pb_decode(&stream, fields, element)) {
             return UBII_ERR_DECODE;
@@ -115,7 +113,7 @@ ubii_status ubii_reply_for_each(const ubii_reply *reply, uint32_t expected_membe
             return UBII_OK;
         }
     }
-    return status == UBII_OK && it.malformed ? UBII_ERR_DECODE : status;
+    return it.malformed ? UBII_ERR_DECODE : UBII_OK;
 }
 
 ubii_status ubii_reply_for_each_string(const ubii_reply *reply, uint32_t expected_member,
@@ -124,16 +122,20 @@ ubii_status ubii_reply_for_each_string(const ubii_reply *reply, uint32_t expecte
     if (reply == NULL || fn == NULL) {
         return UBII_ERR_INVALID_ARGUMENT;
     }
+    ubii_status status = member_of(reply, expected_member);
+    if (status != UBII_OK) {
+        return status;
+    }
     ubii_field_iter it;
-    ubii_status status = occurrences(reply, expected_member, LIST_ELEMENTS, &it);
+    ubii_field_iter_init(&it, reply->bytes, reply->size, LIST_ELEMENTS);
     const uint8_t *text;
     size_t length;
-    while (status == UBII_OK && ubii_field_iter_next(&it, &text, &length)) {
+    while (ubii_field_iter_next(&it, &text, &length)) {
         if (!fn((const char *)text, length, user)) {
             return UBII_OK;
         }
     }
-    return status == UBII_OK && it.malformed ? UBII_ERR_DECODE : status;
+    return it.malformed ? UBII_ERR_DECODE : UBII_OK;
 }
 
 ubii_status ubii_encode_topic_request(const char *topic, uint8_t *buffer, size_t capacity,

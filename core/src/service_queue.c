@@ -2,7 +2,6 @@
  * channel allows one outstanding request), each with its own timeout. */
 #include <string.h>
 
-#include <pb_decode.h>
 #include <pb_encode.h>
 
 #include "copy_string.h"

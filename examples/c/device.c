@@ -8,7 +8,7 @@
 #include <time.h>
 
 #include "example_connect.h"
-#include "ubii/port_linux.h"
+#include "example_port.h"
 #include "ubii/ubii.h"
 
 typedef struct registration {
@@ -72,17 +72,15 @@ static bool poll_until_done(ubii_node *node, const registration *result, time_t 
 int main(int argc, char **argv)
 {
     example_args args = example_parse_args(argc, argv, 0);
-    ubii_linux_port_options options = {0};
-    options.libwebsockets_log_level = 1;
-    ubii_linux_port *port = NULL;
-    if (ubii_linux_port_create(&port, &options) != UBII_OK) {
+    static example_port port;
+    if (!example_port_open(&port)) {
         return 1;
     }
     static ubii_node node;
     time_t deadline = time(NULL) + 10;
-    if (!example_connect(&node, ubii_linux_port_get(port), &args, "libubii-example-device",
+    if (!example_connect(&node, example_port_get(&port), &args, "libubii-example-device",
                          deadline)) {
-        ubii_linux_port_destroy(port);
+        example_port_close(&port);
         return 1;
     }
 
@@ -110,6 +108,6 @@ int main(int argc, char **argv)
              poll_until_done(&node, &removed, deadline) && removed.status == UBII_OK;
     }
     ubii_node_stop_wait(&node, 2000);
-    ubii_linux_port_destroy(port);
+    example_port_close(&port);
     return ok ? 0 : 1;
 }

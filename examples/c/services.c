@@ -7,8 +7,8 @@
 #include <time.h>
 
 #include "example_connect.h"
+#include "example_port.h"
 #include "ubii/clients/client.pb.h"
-#include "ubii/port_linux.h"
 #include "ubii/services/service.pb.h"
 #include "ubii/ubii.h"
 
@@ -87,17 +87,15 @@ static void print_clients(ubii_node *node, const ubii_reply *reply, void *user)
 int main(int argc, char **argv)
 {
     example_args args = example_parse_args(argc, argv, 0);
-    ubii_linux_port_options options = {0};
-    options.libwebsockets_log_level = 1;
-    ubii_linux_port *port = NULL;
-    if (ubii_linux_port_create(&port, &options) != UBII_OK) {
+    static example_port port;
+    if (!example_port_open(&port)) {
         return 1;
     }
     static ubii_node node;
     time_t deadline = time(NULL) + 10;
-    if (!example_connect(&node, ubii_linux_port_get(port), &args, "libubii-example-services",
+    if (!example_connect(&node, example_port_get(&port), &args, "libubii-example-services",
                          deadline)) {
-        ubii_linux_port_destroy(port);
+        example_port_close(&port);
         return 1;
     }
     ubii_call_topic(&node, UBII_SERVICE_SERVICE_LIST, 0, print_services, NULL);
@@ -117,6 +115,6 @@ int main(int argc, char **argv)
         printf("clients: this master has no client list service (%s)\n", UBII_SERVICE_CLIENT_LIST);
     }
     ubii_node_stop_wait(&node, 2000);
-    ubii_linux_port_destroy(port);
+    example_port_close(&port);
     return pending == 0 ? 0 : 1;
 }

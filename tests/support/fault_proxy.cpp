@@ -160,7 +160,7 @@ void FaultProxy::run()
 {
     auto &connections = impl_->connections;
     while (!stopping_) {
-        bool stalled, truncate_next, corrupt_next;
+        bool stalled;
         std::chrono::milliseconds delay;
         {
             std::lock_guard<std::mutex> lock(impl_->mutex);
@@ -171,8 +171,6 @@ void FaultProxy::run()
             }
             stalled = impl_->stalled;
             delay = impl_->delay;
-            truncate_next = impl_->truncate_next;
-            corrupt_next = impl_->corrupt_next;
         }
         connections.erase(std::remove_if(connections.begin(), connections.end(),
                                          [](const Connection &c) { return c.node < 0; }),
@@ -229,11 +227,11 @@ void FaultProxy::run()
                 }
                 Chunk chunk{{buffer, buffer + got}, now + delay};
                 std::lock_guard<std::mutex> lock(impl_->mutex);
-                if (truncate_next && impl_->truncate_next) {
+                if (impl_->truncate_next) {
                     chunk.bytes.resize(chunk.bytes.size() / 2);
                     connection.close_after_to_node = true;
                     impl_->truncate_next = false;
-                } else if (corrupt_next && impl_->corrupt_next) {
+                } else if (impl_->corrupt_next) {
                     for (auto &byte : chunk.bytes)
                         byte = static_cast<uint8_t>(~byte);
                     impl_->corrupt_next = false;
