@@ -204,7 +204,7 @@ static uint64_t backoff_ms(const ubii_node *node)
  * the subscriptions forgotten (the application's stay), no client id. */
 static void tear_down(ubii_node *node)
 {
-    ubii__cancel_calls(node, UBII_ERR_CANCELLED);
+    ubii__cancel_calls(node, UBII_ERR_CANCELLED, UBII__SERVICE_CHANNEL_CLOSES);
     close_channels(node);
     ubii__subscriptions_reset_master(node);
     node->client_id[0] = '\0';
@@ -241,7 +241,7 @@ static void leave(ubii_node *node)
         tear_down(node);
         return;
     }
-    ubii__cancel_calls(node, UBII_ERR_CANCELLED);
+    ubii__cancel_calls(node, UBII_ERR_CANCELLED, UBII__SERVICE_CHANNEL_REUSED);
     node->port.vtable->close(port, UBII_CHANNEL_TOPIC);
     if (enqueue_deregistration(node) != UBII_OK) {
         tear_down(node);
@@ -275,7 +275,7 @@ static void deregistration_done(ubii_node *node)
     if (node->state == UBII_STATE_STOPPING) {
         finish_stop(node);
     } else if (was_leaving) {
-        ubii__cancel_calls(node, UBII_ERR_CANCELLED);
+        ubii__cancel_calls(node, UBII_ERR_CANCELLED, UBII__SERVICE_CHANNEL_CLOSES);
         close_channels(node);
     }
 }
@@ -458,7 +458,7 @@ static void begin_stopping(ubii_node *node)
         finish_stop(node);
         return;
     }
-    ubii__cancel_calls(node, UBII_ERR_CANCELLED);
+    ubii__cancel_calls(node, UBII_ERR_CANCELLED, UBII__SERVICE_CHANNEL_REUSED);
     if (enqueue_deregistration(node) != UBII_OK) {
         finish_stop(node);
         return;

@@ -92,12 +92,12 @@ static void reset_service_channel(ubii_node *node)
     node->port.vtable->open(node->port.context, UBII_CHANNEL_SERVICE, node->service_url, NULL);
 }
 
-void ubii__cancel_calls(ubii_node *node, ubii_status status)
+void ubii__cancel_calls(ubii_node *node, ubii_status status, enum ubii__service_channel_next next)
 {
     if (node->call_count == 0) {
         return;
     }
-    if (node->call_sent) {
+    if (node->call_sent && next == UBII__SERVICE_CHANNEL_REUSED) {
         reset_service_channel(node);
     }
     ubii__call cancelled[UBII_SERVICE_QUEUE_DEPTH];

@@ -15,7 +15,10 @@ ubii_status ubii__enqueue(ubii_node *node, const ubii_services_ServiceRequest *r
                           void *user);
 /* Sends the head of the queue when it can, and delivers its reply or its timeout. */
 void ubii__service_step(ubii_node *node);
+/* What becomes of the service channel once the calls are cancelled: a REQ socket with a request
+ * in flight must be reset before it carries the next one, unless it is about to close anyway. */
+enum ubii__service_channel_next { UBII__SERVICE_CHANNEL_REUSED, UBII__SERVICE_CHANNEL_CLOSES };
 /* Fails every queued call with `status` (application callbacks see it; node steps are dropped). */
-void ubii__cancel_calls(ubii_node *node, ubii_status status);
+void ubii__cancel_calls(ubii_node *node, ubii_status status, enum ubii__service_channel_next next);
 
 #endif

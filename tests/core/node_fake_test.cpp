@@ -416,6 +416,25 @@ TEST_F(NodeWithFakeMaster, ALostTopicConnectionIsDeregisteredBeforeTheRetry)
     EXPECT_TRUE(errors.empty()) << errors.front().second;
 }
 
+// A REQ channel with a request in flight is reset (closed and reopened) when the call is cancelled,
+// but not when it closes right after: no connection attempt is made only to be dropped.
+TEST_F(NodeWithFakeMaster, ALostServiceChannelIsNotReopenedOnlyToBeClosed)
+{
+    start_ready();
+    Reply pending;
+    ASSERT_EQ(ubii_call_topic(&node, "/services/slow", 0, Reply::on_reply, &pending), UBII_OK);
+    poll(1);
+    ASSERT_FALSE(pending.done);
+    const int service_opens = fake.opens[UBII_CHANNEL_SERVICE];
+    fake.set_state(UBII_CHANNEL_SERVICE, UBII_CHANNEL_LOST);
+    poll(1);
+    EXPECT_EQ(ubii_node_state(&node), UBII_STATE_RECONNECTING);
+    EXPECT_TRUE(pending.done);
+    EXPECT_EQ(pending.status, UBII_ERR_CANCELLED);
+    EXPECT_EQ(fake.state(UBII_CHANNEL_SERVICE), UBII_CHANNEL_CLOSED);
+    EXPECT_EQ(fake.opens[UBII_CHANNEL_SERVICE], service_opens);
+}
+
 TEST_F(NodeWithFakeMaster, AMasterThatIsGoneIsNotAskedToDeregister)
 {
     start_ready();

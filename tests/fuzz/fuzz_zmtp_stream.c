@@ -1,7 +1,7 @@
-/* libFuzzer target: ZMTP as the Linux port's in-thread engine reads it (lws_zmtp.c): a byte stream
- * arriving in slices of any size, every whole unit taken off the front with the port's 16 MiB
- * limit, the rest kept for the next slice. The first byte picks the slice size (0: all at once);
- * the rest is what the master sends. Every unit must lie inside the bytes at hand. */
+/* libFuzzer target: ZMTP as the Linux port's in-thread engine reads it (zmtp_channel.c): a byte
+ * stream arriving in slices of any size, every whole unit taken off the front with the port's
+ * limit of 16 MiB, the rest kept for the next slice. The first byte picks the slice size (0: all
+ * at once); the rest is what the master sends. Every unit must lie inside the bytes at hand. */
 #include <stdlib.h>
 #include <string.h>
 

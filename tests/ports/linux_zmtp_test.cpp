@@ -364,14 +364,99 @@ TEST(LinuxPortDefaults, TcpRunsInTheCallersThread)
     ubii_linux_port_destroy(linux_port);
 }
 
-TEST(InThreadZmtpOptions, RefusedWithZmqOnlyAndUnknownEngines)
+int open_fd_count()
+{
+    int count = 0;
+    if (DIR *fds = opendir("/proc/self/fd")) {
+        while (const dirent *entry = readdir(fds)) {
+            count += entry->d_name[0] != '.';
+        }
+        closedir(fds);
+    }
+    return count;
+}
+
+// A node that speaks only tcp:// never starts libwebsockets (whose context would open its own
+// pipes and keep about a megabyte resident): the port holds its wake-up eventfd and one socket.
+TEST(LinuxPortDefaults, TcpOnlyStartsNoLibwebsockets)
+{
+    Peer peer;
+    const int fds_before = open_fd_count();
+    ubii_linux_port *linux_port = nullptr;
+    ASSERT_EQ(ubii_linux_port_create(&linux_port, nullptr), UBII_OK);
+    EXPECT_EQ(open_fd_count(), fds_before + 1) << "the wake-up eventfd only";
+    ubii_port port = ubii_linux_port_get(linux_port);
+    ASSERT_EQ(port.vtable->open(port.context, UBII_CHANNEL_TOPIC, peer.url().c_str(), "client-7"),
+              UBII_OK);
+    for (int i = 0; i < 20; ++i) {
+        port.vtable->wait(port.context, 5);
+    }
+    EXPECT_EQ(open_fd_count(), fds_before + 2) << "and the connection's socket";
+
+    // The first ws:// or http:// channel starts it.
+    ASSERT_EQ(port.vtable->open(port.context, UBII_CHANNEL_SERVICE, "http://127.0.0.1:1/services",
+                                nullptr),
+              UBII_OK);
+    EXPECT_GT(open_fd_count(), fds_before + 2);
+    ubii_linux_port_destroy(linux_port);
+    EXPECT_EQ(open_fd_count(), fds_before);
+}
+
+// Beside a libwebsockets channel, lws drives the wait: the in-thread connection's traffic must
+// still end it. The bound is loose on purpose: a wait of 20 s that ends within 2 s was ended by
+// the master's bytes, not by its timeout.
+TEST(LinuxPortDefaults, TcpBesideAWebSocketEndsTheWaitThatLibwebsocketsDrives)
+{
+    Peer peer;
+    uint16_t silent_port = 0; // accepts a WebSocket connection and never answers: lws keeps it
+    const int silent = ubii_test::listen_on_loopback(silent_port);
+    ASSERT_GE(silent, 0);
+    ubii_linux_port_options options{};
+    options.libwebsockets_log_level = 1;
+    ubii_linux_port *linux_port = nullptr;
+    ASSERT_EQ(ubii_linux_port_create(&linux_port, &options), UBII_OK);
+    ubii_port port = ubii_linux_port_get(linux_port);
+    const std::string ws = "ws://127.0.0.1:" + std::to_string(silent_port);
+    ASSERT_EQ(port.vtable->open(port.context, UBII_CHANNEL_TOPIC, ws.c_str(), "client-7"), UBII_OK);
+    ASSERT_EQ(port.vtable->open(port.context, UBII_CHANNEL_SERVICE, peer.url().c_str(), ""),
+              UBII_OK);
+    uint8_t *buffer = nullptr;
+    ASSERT_EQ(port.vtable->send_begin(port.context, UBII_CHANNEL_SERVICE, 7, &buffer), UBII_OK);
+    std::memcpy(buffer, "request", 7);
+    ASSERT_EQ(port.vtable->send_commit(port.context, UBII_CHANNEL_SERVICE, 0), UBII_OK);
+    auto pump_until = [&](const std::function<bool()> &done) {
+        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+        while (!done() && std::chrono::steady_clock::now() < deadline) {
+            port.vtable->wait(port.context, 5);
+            peer.serve();
+        }
+        return done();
+    };
+    ASSERT_TRUE(pump_until([&] { return peer.connected() && peer.received.size() >= 64; }));
+    peer.send_bytes(peer_handshake("REP"));
+    ASSERT_TRUE(pump_until([&] {
+        return std::string(peer.received.begin(), peer.received.end()).find("request") !=
+               std::string::npos;
+    }));
+
+    peer.send_bytes(routed("reply"));
+    const auto start = std::chrono::steady_clock::now();
+    port.vtable->wait(port.context, 20000);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+    const uint8_t *data = nullptr;
+    size_t size = 0;
+    unsigned flags = 0;
+    ASSERT_EQ(port.vtable->receive(port.context, UBII_CHANNEL_SERVICE, &data, &size, &flags),
+              UBII_OK);
+    EXPECT_EQ(std::string(reinterpret_cast<const char *>(data), size), "reply");
+    ubii_linux_port_destroy(linux_port);
+    close(silent);
+}
+
+TEST(InThreadZmtpOptions, UnknownEnginesAreRefused)
 {
     ubii_linux_port *port = nullptr;
     ubii_linux_port_options options{};
-    options.zmq_engine = UBII_LINUX_ZMQ_IN_THREAD;
-    options.zmq_only = true; // the engine needs libwebsockets
-    EXPECT_EQ(ubii_linux_port_create(&port, &options), UBII_ERR_INVALID_ARGUMENT);
-    options.zmq_only = false;
     const int unknown_engine = 7; // as a C caller may pass; C++ cannot name it
     static_assert(sizeof options.zmq_engine == sizeof unknown_engine, "an int-sized enum");
     std::memcpy(&options.zmq_engine, &unknown_engine, sizeof unknown_engine);

@@ -18,8 +18,7 @@ static bool starts_with(const char *text, const char *prefix)
 
 static bool uses_lws(const channel *ch)
 {
-    return ch->kind == TRANSPORT_WEBSOCKET || ch->kind == TRANSPORT_HTTP ||
-           ch->kind == TRANSPORT_ZMTP;
+    return ch->kind == TRANSPORT_WEBSOCKET || ch->kind == TRANSPORT_HTTP;
 }
 
 static void close_channel(void *context, ubii_channel which)
@@ -30,9 +29,11 @@ static void close_channel(void *context, ubii_channel which)
     }
     channel *ch = &port->channels[which];
     if (ch->kind == TRANSPORT_ZMQ) {
-        ubii__lws_release_zmq(port, ch->zmq.socket);
-        ubii__lws_release_zmq(port, ch->zmq.monitor);
+        ubii__lws_release_fd(port, ch->zmq.socket);
+        ubii__lws_release_fd(port, ch->zmq.monitor);
         ubii__zmq_close(ch);
+    } else if (ch->kind == TRANSPORT_ZMTP) {
+        ubii__zmtp_close(port, ch);
     } else if (uses_lws(ch)) {
         ubii__lws_close(port, which);
     }
@@ -60,8 +61,16 @@ static ubii_status open_channel(void *context, ubii_channel which, const char *u
         }
         return status;
     }
-    if (starts_with(url, "tcp://") || starts_with(url, "ws://") || starts_with(url, "wss://") ||
-        starts_with(url, "http://") || starts_with(url, "https://")) {
+    if (starts_with(url, "tcp://")) {
+        ch->kind = TRANSPORT_ZMTP;
+        ubii_status status = ubii__zmtp_open(port, which, url, client_id);
+        if (status != UBII_OK) {
+            close_channel(port, which);
+        }
+        return status;
+    }
+    if (starts_with(url, "ws://") || starts_with(url, "wss://") || starts_with(url, "http://") ||
+        starts_with(url, "https://")) {
         ubii_status status = ubii__lws_open(port, which, url, client_id);
         if (status != UBII_OK) {
             close_channel(port, which);
@@ -102,6 +111,9 @@ static ubii_status send_begin(void *context, ubii_channel which, size_t size, ui
     if (uses_lws(ch)) {
         return ubii__lws_send_begin(port, which, size, buffer);
     }
+    if (ch->kind == TRANSPORT_ZMTP) {
+        return ubii__zmtp_send_begin(port, ch, size, buffer);
+    }
     return ubii__zmq_send_begin(port, ch, size, buffer);
 }
 
@@ -118,7 +130,11 @@ static ubii_status send_commit(void *context, ubii_channel which, unsigned flags
     if (uses_lws(ch)) {
         return ubii__lws_send_commit(port, which, flags);
     }
-    return ubii__zmq_send_commit(ch); /* ZMQ frames have no text/binary distinction */
+    /* ZMQ frames have no text/binary distinction */
+    if (ch->kind == TRANSPORT_ZMTP) {
+        return ubii__zmtp_send_commit(ch);
+    }
+    return ubii__zmq_send_commit(ch);
 }
 
 static ubii_status receive(void *context, ubii_channel which, const uint8_t **data, size_t *size,
@@ -132,6 +148,9 @@ static ubii_status receive(void *context, ubii_channel which, const uint8_t **da
     *flags = 0;
     if (uses_lws(ch)) {
         return ubii__lws_receive(port, which, data, size, flags);
+    }
+    if (ch->kind == TRANSPORT_ZMTP) {
+        return ubii__zmtp_receive(port, ch, data, size);
     }
     if (ch->kind != TRANSPORT_ZMQ) {
         return UBII_ERR_WOULD_BLOCK;
@@ -158,7 +177,7 @@ static bool zmq_message_waiting(ubii_linux_port *port)
 }
 
 /* libwebsockets must drive the wait while one of its connections exists (only it knows what
- * they wait for); otherwise zmq_poll alone is cheaper. */
+ * they wait for); otherwise poll or zmq_poll alone is cheaper. */
 static bool lws_in_use(const ubii_linux_port *port)
 {
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
@@ -177,23 +196,49 @@ static void drain_wake(ubii_linux_port *port)
     }
 }
 
-static ubii_status wait_for_io(void *context, int timeout_ms)
+/* The in-thread ZMTP connections' fds and the wake fd, in poll(2): the wait without libzmq and
+ * libwebsockets. */
+static ubii_status poll_plain(ubii_linux_port *port, int timeout_ms)
 {
-    ubii_linux_port *port = context;
+    struct pollfd fds[UBII_CHANNEL_COUNT + 1];
+    nfds_t count = 0;
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        const channel *ch = &port->channels[i];
+        short events = ch->kind == TRANSPORT_ZMTP ? ubii__zmtp_events(port, ch) : 0;
+        if (events != 0) {
+            fds[count].fd = ch->zmtp.fd;
+            fds[count].events = events;
+            fds[count++].revents = 0;
+        }
+    }
+    struct pollfd *wake = &fds[count++];
+    wake->fd = port->wake_fd;
+    wake->events = POLLIN;
+    wake->revents = 0;
+    if (poll(fds, count, timeout_ms) < 0 && errno != EINTR) {
+        return UBII_ERR_TRANSPORT;
+    }
+    if (wake->revents & POLLIN) {
+        drain_wake(port);
+    }
+    return UBII_OK;
+}
+
+static ubii_status wait_for_any(ubii_linux_port *port, int timeout_ms)
+{
     if (port->lws != NULL && lws_in_use(port)) {
-        /* The wake fd is adopted into lws, whose callback drains it. */
+        /* The wake fd and the others are adopted into lws; its callback drains the wake fd. */
+        for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+            channel *ch = &port->channels[i];
+            if (ch->kind == TRANSPORT_ZMTP && (ubii__zmtp_events(port, ch) & POLLOUT)) {
+                ubii__lws_want_writable(port, &ch->zmtp);
+            }
+        }
         ubii__lws_service(port, zmq_message_waiting(port) ? 0 : timeout_ms);
         return UBII_OK;
     }
-    if (port->zmq_api.handle == NULL) { /* no ZMQ socket: only a wake-up can end the wait */
-        struct pollfd wake = {port->wake_fd, POLLIN, 0};
-        if (poll(&wake, 1, timeout_ms) < 0 && errno != EINTR) {
-            return UBII_ERR_TRANSPORT;
-        }
-        if (wake.revents & POLLIN) {
-            drain_wake(port);
-        }
-        return UBII_OK;
+    if (port->zmq_api.handle == NULL) {
+        return poll_plain(port, timeout_ms);
     }
     zmq_pollitem_t items[2 * UBII_CHANNEL_COUNT + 1];
     int count = 0;
@@ -215,14 +260,42 @@ static ubii_status wait_for_io(void *context, int timeout_ms)
     return UBII_OK;
 }
 
+static ubii_status wait_for_io(void *context, int timeout_ms)
+{
+    ubii_linux_port *port = context;
+    /* The in-thread ZMTP connections write what was queued since the last wait before it, and do
+     * the rest of their I/O after it. */
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        if (port->channels[i].kind == TRANSPORT_ZMTP) {
+            ubii__zmtp_flush(port, (ubii_channel)i);
+        }
+    }
+    ubii_status status = wait_for_any(port, timeout_ms);
+    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
+        if (port->channels[i].kind == TRANSPORT_ZMTP) {
+            ubii__zmtp_service(port, (ubii_channel)i);
+        }
+    }
+    return status;
+}
+
 static int poll_fds(void *context, ubii_pollfd *fds, int capacity)
 {
     ubii_linux_port *port = context;
     int count = 0;
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
-        if (port->channels[i].kind == TRANSPORT_ZMQ) {
+        const channel *ch = &port->channels[i];
+        if (ch->kind == TRANSPORT_ZMQ) {
             int room = capacity > count ? capacity - count : 0;
             count += ubii__zmq_fds(&port->channels[i], fds != NULL ? fds + count : NULL, room);
+        }
+        short events = ch->kind == TRANSPORT_ZMTP ? ubii__zmtp_events(port, ch) : 0;
+        if (events != 0) {
+            if (fds != NULL && count < capacity) {
+                fds[count].fd = ch->zmtp.fd;
+                fds[count].events = events;
+            }
+            count++;
         }
     }
     if (port->lws != NULL) {
@@ -273,9 +346,8 @@ ubii_status ubii_linux_port_create(ubii_linux_port **result, const ubii_linux_po
         port->options.zmq_engine =
             port->options.zmq_only ? UBII_LINUX_ZMQ_LIBZMQ : UBII_LINUX_ZMQ_IN_THREAD;
     }
-    if ((port->options.zmq_engine != UBII_LINUX_ZMQ_LIBZMQ &&
-         port->options.zmq_engine != UBII_LINUX_ZMQ_IN_THREAD) ||
-        (port->options.zmq_engine == UBII_LINUX_ZMQ_IN_THREAD && port->options.zmq_only)) {
+    if (port->options.zmq_engine != UBII_LINUX_ZMQ_LIBZMQ &&
+        port->options.zmq_engine != UBII_LINUX_ZMQ_IN_THREAD) {
         free(port);
         return UBII_ERR_INVALID_ARGUMENT;
     }
@@ -301,7 +373,11 @@ ubii_status ubii_linux_port_create(ubii_linux_port **result, const ubii_linux_po
             return UBII_ERR_TRANSPORT;
         }
     }
-    if (!port->options.zmq_only && !ubii__lws_start(port)) {
+    /* TLS: OpenSSL's set-up and certificate store take tens of milliseconds, paid here rather
+     * than in a poll, and a bad ca_file is reported here. Otherwise libwebsockets starts with the
+     * first ws:// or http:// channel (a quarter of a millisecond), and never in a node that only
+     * speaks tcp://. */
+    if (port->options.enable_tls && !port->options.zmq_only && !ubii__lws_start(port)) {
         ubii_linux_port_destroy(port);
         return UBII_ERR_TRANSPORT;
     }

@@ -7,10 +7,13 @@
 
 #include <zmq.h>
 
+#include "zmtp_wire.h"
+
 #include "zmq_library.h"
 
 #include "ubii/port_linux.h"
 
+struct addrinfo;
 struct lws;
 struct lws_context;
 struct lws_vhost;
@@ -20,7 +23,7 @@ typedef enum transport_kind {
     TRANSPORT_ZMQ = 1,
     TRANSPORT_WEBSOCKET = 2,
     TRANSPORT_HTTP = 3,
-    TRANSPORT_ZMTP = 4 /* tcp:// spoken in the caller's thread over an lws raw socket */
+    TRANSPORT_ZMTP = 4 /* tcp:// spoken in the caller's thread (zmtp_channel.c) */
 } transport_kind;
 
 /* A whole message waiting to be taken (received) or written (sent); data follows the header
@@ -53,12 +56,14 @@ typedef struct lws_channel {
     queued_message *reserved;
 } lws_channel;
 
-/* A ZMQ fd adopted into libwebsockets, so that ZMQ traffic wakes lws_service(). */
-typedef struct zmq_wakeup {
+/* Another descriptor adopted into libwebsockets (as a duplicate), so that its traffic ends
+ * lws_service(): a libzmq socket's or a ZMTP connection's. */
+typedef struct foreign_fd {
     struct ubii_linux_port *port;
-    void *socket;
+    const void *owner; /* the libzmq socket or ZMTP channel; NULL once released */
+    void *zmq_socket;  /* libzmq: ZMQ_EVENTS is read when it fires, consuming its signal */
     struct lws *wsi;
-} zmq_wakeup;
+} foreign_fd;
 
 typedef struct zmq_channel {
     const ubii__zmq_library *api; /* the port's */
@@ -70,14 +75,37 @@ typedef struct zmq_channel {
     bool holds_outgoing;
 } zmq_channel;
 
+/* ZMTP on a plain socket: bytes read into rx (handed to the core in place, `lent` of them from
+ * rx_start until the next receive), bytes to write in tx (our greeting first, then framed
+ * messages). */
+typedef struct zmtp_channel {
+    int fd;         /* -1 without a connection */
+    bool request;   /* REQ (service channel) or DEALER (topic channel) */
+    bool connected; /* the non-blocking connect has completed */
+    ubii_zmtp_step step;
+    struct addrinfo *addresses; /* the host's, until connected; `trying` is the current one */
+    struct addrinfo *trying;
+    size_t greeting_unsent; /* written before the master's READY; messages only after it */
+    uint8_t *rx;
+    size_t rx_start, rx_end, rx_capacity, lent;
+    size_t checked; /* bytes from rx_start known to be whole, well-formed units */
+    uint8_t *tx;
+    size_t tx_start, tx_end, tx_capacity;
+    bool has_reservation; /* send_begin's room, at tx_end behind its frame header */
+    size_t reserved_size;
+} zmtp_channel;
+
 typedef struct channel {
     transport_kind kind;
     ubii_channel_state state;
     zmq_channel zmq;
     lws_channel lws;
+    zmtp_channel zmtp;
 } channel;
 
-enum { MAX_ZMQ_WAKEUPS = 2 * UBII_CHANNEL_COUNT };
+/* Descriptors of libzmq's sockets and ZMTP's adopted into libwebsockets while it drives the
+ * wait (lws_foreign_fds.c): at most two per channel. */
+enum { MAX_FOREIGN_FDS = 2 * UBII_CHANNEL_COUNT };
 
 struct ubii_linux_port {
     ubii_linux_port_options options;
@@ -87,7 +115,7 @@ struct ubii_linux_port {
     channel channels[UBII_CHANNEL_COUNT];
     struct lws_context *lws; /* created on the first WebSocket or HTTP channel */
     struct lws_vhost *vhost;
-    zmq_wakeup *wakeups[MAX_ZMQ_WAKEUPS];
+    foreign_fd *foreign_fds[MAX_FOREIGN_FDS];
     int lws_connections;   /* live WebSocket/HTTP connections, closing ones included */
     size_t lws_bytes_read; /* handed over by libwebsockets in the current service pass */
     char last_error[256];
@@ -112,9 +140,29 @@ ubii_status ubii__lws_send_commit(ubii_linux_port *port, ubii_channel which, uns
 ubii_status ubii__lws_receive(ubii_linux_port *port, ubii_channel which, const uint8_t **data,
                               size_t *size, unsigned *flags);
 
-/* lws_zmq_fds.c: keeps one adopted fd per ZMQ socket while libwebsockets runs. */
+/* lws_foreign_fds.c: keeps a duplicate of each libzmq socket's and ZMTP connection's fd in
+ * libwebsockets' wait while it runs (or from when it starts). */
+void ubii__lws_adopt_fd(ubii_linux_port *port, const void *owner, int fd, void *zmq_socket);
 void ubii__lws_adopt_zmq(ubii_linux_port *port, void *socket);
-void ubii__lws_release_zmq(ubii_linux_port *port, void *socket);
+void ubii__lws_release_fd(ubii_linux_port *port, const void *owner);
+/* The next lws wait ends when the owner's fd is writable as well. */
+void ubii__lws_want_writable(ubii_linux_port *port, const void *owner);
+
+/* zmtp_channel.c: tcp:// in the caller's thread. */
+ubii_status ubii__zmtp_open(ubii_linux_port *port, ubii_channel which, const char *url,
+                            const char *client_id);
+void ubii__zmtp_close(ubii_linux_port *port, channel *ch);
+/* Writes what is queued (before a wait). */
+void ubii__zmtp_flush(ubii_linux_port *port, ubii_channel which);
+/* Connects, writes, reads (after a wait). */
+void ubii__zmtp_service(ubii_linux_port *port, ubii_channel which);
+/* poll(2) events the channel's fd waits for; 0 without one. */
+short ubii__zmtp_events(const ubii_linux_port *port, const channel *ch);
+ubii_status ubii__zmtp_send_begin(ubii_linux_port *port, channel *ch, size_t size,
+                                  uint8_t **buffer);
+ubii_status ubii__zmtp_send_commit(channel *ch);
+ubii_status ubii__zmtp_receive(ubii_linux_port *port, channel *ch, const uint8_t **data,
+                               size_t *size);
 
 /* zmq_channel.c */
 ubii_status ubii__zmq_open(ubii_linux_port *port, ubii_channel which, const char *url,

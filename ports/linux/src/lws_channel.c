@@ -1,6 +1,5 @@
 /* The Linux port's channel functions for the libwebsockets transports: WebSocket topic data
- * (ws://, wss://), binary HTTP services (http://, https://) and the in-thread ZMQ engine's tcp://
- * (lws_zmtp.c). */
+ * (ws://, wss://) and binary HTTP services (http://, https://). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,9 +22,6 @@ static bool parse_url(const char *url, lws_channel *ch, transport_kind *kind)
     case UBII_URL_HTTP:
     case UBII_URL_HTTPS:
         *kind = TRANSPORT_HTTP;
-        break;
-    case UBII_URL_TCP:
-        *kind = TRANSPORT_ZMTP;
         break;
     default:
         return false;
@@ -60,15 +56,15 @@ ubii_status ubii__lws_open(ubii_linux_port *port, ubii_channel which, const char
         ubii__lws_set_error(port, "TLS URL on a port created without enable_tls", url);
         return UBII_ERR_UNSUPPORTED;
     }
-    if (port->lws == NULL) {
-        return port->options.zmq_only ? UBII_ERR_UNSUPPORTED : UBII_ERR_TRANSPORT;
+    if (port->options.zmq_only) {
+        return UBII_ERR_UNSUPPORTED;
+    }
+    if (!ubii__lws_start(port)) {
+        return UBII_ERR_TRANSPORT;
     }
     c->kind = kind;
     if (kind == TRANSPORT_WEBSOCKET) {
         return ubii__lws_connect_websocket(port, which, client_id);
-    }
-    if (kind == TRANSPORT_ZMTP) {
-        return ubii__lws_connect_zmtp(port, which, client_id);
     }
     c->state = UBII_CHANNEL_OPEN; /* each request makes its own connection */
     return UBII_OK;

@@ -1,7 +1,7 @@
 /* The connection records of the libwebsockets transports: their message queues, their lifetime
  * (a record outlives its channel if need be: closing a channel detaches the record and asks lws to
  * kill the connection; lws frees it on WSI_DESTROY), and what arrives on them. The protocol
- * files (lws_websocket.c, lws_http.c, lws_zmtp.c) frame and parse; this file owns. */
+ * files (lws_websocket.c, lws_http.c) frame and parse; this file owns. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

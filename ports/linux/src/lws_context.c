@@ -1,6 +1,6 @@
 /* The libwebsockets context and the wait: Debian's libwebsockets is built without external-poll
  * support, so lws drives the waiting; it alone knows when its sockets need POLLOUT (e.g. during a
- * non-blocking connect). ZMQ's fds are adopted into it (lws_zmq_fds.c) and a scheduled timer
+ * non-blocking connect). Other fds are adopted into it (lws_foreign_fds.c) and a scheduled timer
  * bounds every wait. */
 #include <poll.h>
 #include <stdlib.h>
@@ -11,8 +11,7 @@
 static const struct lws_protocols protocols[] = {
     {"ubii-ws", ubii__lws_on_websocket, 0, RX_CHUNK, 0, NULL, 0},
     {"ubii-http", ubii__lws_on_http, 0, RX_CHUNK, 0, NULL, 0},
-    {"ubii-zmq-wakeup", ubii__lws_on_zmq_wakeup, 0, 0, 0, NULL, 0},
-    {"ubii-zmtp", ubii__lws_on_zmtp, 0, RX_CHUNK, 0, NULL, 0},
+    {"ubii-foreign-fd", ubii__lws_on_foreign_fd, 0, 0, 0, NULL, 0},
     {"ubii-wake", ubii__lws_on_wake, 0, 0, 0, NULL, 0},
     {NULL, NULL, 0, 0, 0, NULL, 0}};
 
@@ -44,9 +43,12 @@ bool ubii__lws_start(ubii_linux_port *port)
     port->vhost = lws_get_vhost_by_name(port->lws, "default");
     ubii__lws_adopt_wake(port);
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
-        if (port->channels[i].kind == TRANSPORT_ZMQ) {
-            ubii__lws_adopt_zmq(port, port->channels[i].zmq.socket);
-            ubii__lws_adopt_zmq(port, port->channels[i].zmq.monitor);
+        channel *ch = &port->channels[i];
+        if (ch->kind == TRANSPORT_ZMQ) {
+            ubii__lws_adopt_zmq(port, ch->zmq.socket);
+            ubii__lws_adopt_zmq(port, ch->zmq.monitor);
+        } else if (ch->kind == TRANSPORT_ZMTP) {
+            ubii__lws_adopt_fd(port, &ch->zmtp, ch->zmtp.fd, NULL);
         }
     }
     return true;
@@ -59,9 +61,9 @@ void ubii__lws_destroy(ubii_linux_port *port)
         port->lws = NULL;
         port->vhost = NULL;
     }
-    for (int i = 0; i < MAX_ZMQ_WAKEUPS; ++i) {
-        free(port->wakeups[i]);
-        port->wakeups[i] = NULL;
+    for (int i = 0; i < MAX_FOREIGN_FDS; ++i) {
+        free(port->foreign_fds[i]);
+        port->foreign_fds[i] = NULL;
     }
 }
 
@@ -70,12 +72,12 @@ static void wake_up(lws_sorted_usec_list_t *timer)
     (void)timer; /* lws_service returns once it has run */
 }
 
-/* The connection of an open WebSocket or ZMTP channel, which writes its outbox itself. */
+/* The connection of an open WebSocket channel, which writes its outbox itself. */
 static lws_connection *writer_of(channel *c)
 {
     lws_connection *connection = c->lws.connection;
-    bool writes = (c->kind == TRANSPORT_WEBSOCKET || c->kind == TRANSPORT_ZMTP) &&
-                  c->state == UBII_CHANNEL_OPEN && connection != NULL && connection->wsi != NULL;
+    bool writes = c->kind == TRANSPORT_WEBSOCKET && c->state == UBII_CHANNEL_OPEN &&
+                  connection != NULL && connection->wsi != NULL;
     return writes ? connection : NULL;
 }
 

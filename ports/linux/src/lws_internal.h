@@ -4,13 +4,12 @@
 /* Shared by the Linux port's libwebsockets files: lws_channel.c (the port's functions),
  * lws_context.c (the context and the wait), lws_connection.c (the connection records, which it
  * alone owns), lws_outbox.c (outgoing frames), and the protocols over them: lws_websocket.c,
- * lws_http.c, lws_zmtp.c (ZMTP over an lws raw socket, in the caller's thread). */
+ * lws_http.c. */
 
 #include <libwebsockets.h>
 
 #include "linux_port.h"
 #include "websocket_frame.h"
-#include "zmtp_wire.h"
 
 enum {
     RX_CHUNK = 64 * 1024,
@@ -31,7 +30,6 @@ enum {
 
 /* Outgoing messages keep LWS_PRE bytes before their data: room for a frame header. */
 typedef char headroom_holds_a_websocket_header[LWS_PRE >= UBII_WS_MAX_CLIENT_HEADER ? 1 : -1];
-typedef char headroom_holds_a_zmtp_header[LWS_PRE >= UBII_ZMTP_MAX_HEADER ? 1 : -1];
 
 typedef struct lws_connection {
     ubii_linux_port *port;  /* NULL once the channel has let go of it */
@@ -39,15 +37,9 @@ typedef struct lws_connection {
     ubii_channel which;
     struct lws *wsi;
     bool http;
-    /* What the connection writes before its outbox (the ZMTP greeting, the WebSocket upgrade, the
-     * HTTP request) has been handed to lws: until then it waits to write (pollfds says POLLOUT). */
+    /* What the connection writes before its outbox (the WebSocket upgrade, the HTTP request) has
+     * been handed to lws: until then it waits to write (pollfds says POLLOUT). */
     bool setup_written;
-    /* ZMTP in the caller's thread (tcp:// with UBII_LINUX_ZMQ_IN_THREAD): a REQ or a DEALER, and
-     * how far the master's half of the handshake has come. The greeting and READY to send wait
-     * in `request` until the connection is up; `assembly` gathers the byte stream. */
-    bool zmtp;
-    bool zmtp_request;
-    ubii_zmtp_step zmtp_step;
     /* WebSocket: the message being assembled from fragments. */
     uint8_t *assembly;
     size_t assembled;
@@ -115,14 +107,9 @@ int ubii__lws_on_http(struct lws *wsi, enum lws_callback_reasons reason, void *u
                       size_t len);
 /* Posts `body` (taken over) on a connection of its own. */
 ubii_status ubii__lws_post_request(ubii_linux_port *port, ubii_channel which, queued_message *body);
-int ubii__lws_on_zmtp(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
-                      size_t len);
-/* Connects the channel as a REQ or a DEALER. */
-ubii_status ubii__lws_connect_zmtp(ubii_linux_port *port, ubii_channel which,
-                                   const char *client_id);
 
-/* lws_zmq_fds.c and lws_wake.c: descriptors that end the wait. */
-int ubii__lws_on_zmq_wakeup(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
+/* lws_foreign_fds.c and lws_wake.c: descriptors that end the wait. */
+int ubii__lws_on_foreign_fd(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
                             size_t len);
 int ubii__lws_on_wake(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
                       size_t len);

@@ -1,4 +1,4 @@
-/* Outgoing WebSocket and ZMTP frames: the outbox of an open channel written in batches, framed in
+/* Outgoing WebSocket frames: the outbox of an open channel written in batches, framed in
  * the messages' own headroom. */
 #include <stdlib.h>
 #include <string.h>
@@ -17,22 +17,12 @@ static const uint8_t *next_mask(lws_connection *connection, struct lws *wsi)
     return connection->masks + connection->masks_left;
 }
 
-static size_t framing_size(const lws_connection *connection, size_t size)
-{
-    return connection->zmtp ? ubii__zmtp_header_size(connection->zmtp_request, size)
-                            : ubii__ws_client_header_size(size);
-}
-
 /* Frames the message at `payload` in place: header written just before it, and for WebSocket
  * the payload masked. Returns where the frame starts, or NULL without a masking key. */
 static uint8_t *frame_in_place(lws_connection *connection, struct lws *wsi, uint8_t *payload,
                                size_t size, unsigned flags)
 {
-    uint8_t *header = payload - framing_size(connection, size);
-    if (connection->zmtp) {
-        ubii__zmtp_write_header(header, connection->zmtp_request, size);
-        return header;
-    }
+    uint8_t *header = payload - ubii__ws_client_header_size(size);
     const uint8_t *mask = next_mask(connection, wsi);
     if (mask == NULL) {
         return NULL;
@@ -69,7 +59,7 @@ static const char *write_frames(lws_connection *connection, lws_channel *ch, str
 {
     static const char no_mask[] = "no random bytes for WebSocket masking keys";
     queued_message *message = ch->outbox.head;
-    size_t framed = framing_size(connection, message->size) + message->size;
+    size_t framed = ubii__ws_client_header_size(message->size) + message->size;
     uint8_t *start;
     size_t length;
     if (framed > BATCH_BYTES) {
@@ -90,7 +80,7 @@ static const char *write_frames(lws_connection *connection, lws_channel *ch, str
     start = connection->batch + LWS_PRE;
     length = 0;
     while ((message = ch->outbox.head) != NULL &&
-           length + (framed = framing_size(connection, message->size) + message->size) <=
+           length + (framed = ubii__ws_client_header_size(message->size) + message->size) <=
                BATCH_BYTES) {
         ubii__lws_pop(&ch->outbox);
         uint8_t *payload = start + length + (framed - message->size);

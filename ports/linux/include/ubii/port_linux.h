@@ -5,8 +5,8 @@
  * data (ws://, wss://) and binary HTTP services (http://, https://). Unlike the core, this port
  * allocates (libzmq and libwebsockets do). It starts no thread, unless tcp:// is spoken through
  * libzmq (UBII_LINUX_ZMQ_LIBZMQ, or zmq_only), whose threads then run. Host names in URLs that
- * libwebsockets connects (all but libzmq's) are resolved synchronously when a connection starts;
- * where a frame must never stall, give an IP address.
+ * libzmq does not connect are resolved synchronously when a connection starts; where a frame must
+ * never stall, give an IP address.
  *
  *     ubii_linux_port *linux_port;
  *     ubii_linux_port_create(&linux_port, NULL);
@@ -37,10 +37,10 @@ typedef enum ubii_linux_zmq_engine {
      * choice where the polling thread is busy for long stretches and messages should keep coming
      * in meanwhile (examples/cpp/ocr_node keeps only the newest frame). */
     UBII_LINUX_ZMQ_LIBZMQ = 1,
-    /* ZMTP 3 written by libubii over a libwebsockets raw socket, in the thread that polls the
-     * node: no extra thread, and a node polled once per frame takes the frame's messages in a few
-     * reads and sends its own in one write (bench/run.sh at 60 Hz: 0.5 against libzmq's 8.9 µs of
-     * CPU per message). The master sees the same REQ and DEALER peers. */
+    /* ZMTP 3 written by libubii over a plain socket, in the thread that polls the node: no extra
+     * thread, no libwebsockets, and a node polled once per frame takes the frame's messages in a
+     * few reads and sends its own in one write (bench/run.sh at 60 Hz: 0.5 against libzmq's 8.9 µs
+     * of CPU per message). The master sees the same REQ and DEALER peers. */
     UBII_LINUX_ZMQ_IN_THREAD = 2
 } ubii_linux_zmq_engine;
 
@@ -59,10 +59,10 @@ typedef struct ubii_linux_port_options {
      * LLL_ERR (1) to keep its notices off stderr. */
     int libwebsockets_log_level;
     /* Only tcp:// (ZMQ) URLs: libwebsockets is never started, ws:// and http:// give
-     * UBII_ERR_UNSUPPORTED. Otherwise libwebsockets starts in ubii_linux_port_create, so that no
-     * ubii_node_poll() ever pays for it. */
+     * UBII_ERR_UNSUPPORTED. Otherwise libwebsockets starts with the first ws:// or http:// channel
+     * (a quarter of a millisecond), or in ubii_linux_port_create with enable_tls, so that no
+     * ubii_node_poll() pays for OpenSSL's set-up. */
     bool zmq_only;
-    /* UBII_LINUX_ZMQ_IN_THREAD needs libwebsockets: not with zmq_only. */
     ubii_linux_zmq_engine zmq_engine;
     /* TLS: a PEM file of the certificates to trust (a CA's, or a master's self-signed one) instead
      * of the system's store. The master's certificate must then chain to one of them and name the
