@@ -13,6 +13,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
@@ -376,8 +377,21 @@ int open_fd_count()
     return count;
 }
 
-// A node that speaks only tcp:// never starts libwebsockets (whose context would open its own
-// pipes and keep about a megabyte resident): the port holds its wake-up eventfd and one socket.
+bool libwebsockets_mapped()
+{
+    std::ifstream maps("/proc/self/maps");
+    std::string line;
+    while (std::getline(maps, line)) {
+        if (line.find("libwebsockets") != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// A node that speaks only tcp:// never loads libwebsockets (nor the OpenSSL it brings), let alone
+// starts it (its context opens pipes of its own): the port holds its wake-up eventfd and one
+// socket. Nothing before this test in this program loads it.
 TEST(LinuxPortDefaults, TcpOnlyStartsNoLibwebsockets)
 {
     Peer peer;
@@ -392,12 +406,14 @@ TEST(LinuxPortDefaults, TcpOnlyStartsNoLibwebsockets)
         port.vtable->wait(port.context, 5);
     }
     EXPECT_EQ(open_fd_count(), fds_before + 2) << "and the connection's socket";
+    EXPECT_FALSE(libwebsockets_mapped());
 
     // The first ws:// or http:// channel starts it.
     ASSERT_EQ(port.vtable->open(port.context, UBII_CHANNEL_SERVICE, "http://127.0.0.1:1/services",
                                 nullptr),
               UBII_OK);
     EXPECT_GT(open_fd_count(), fds_before + 2);
+    EXPECT_TRUE(libwebsockets_mapped());
     ubii_linux_port_destroy(linux_port);
     EXPECT_EQ(open_fd_count(), fds_before);
 }

@@ -378,8 +378,9 @@ ubii_status ubii_linux_port_create(ubii_linux_port **result, const ubii_linux_po
      * first ws:// or http:// channel (a quarter of a millisecond), and never in a node that only
      * speaks tcp://. */
     if (port->options.enable_tls && !port->options.zmq_only && !ubii__lws_start(port)) {
+        bool missing = port->lws_api.handle == NULL; /* libwebsockets is not installed */
         ubii_linux_port_destroy(port);
-        return UBII_ERR_TRANSPORT;
+        return missing ? UBII_ERR_UNSUPPORTED : UBII_ERR_TRANSPORT;
     }
     *result = port;
     return UBII_OK;

@@ -9,6 +9,7 @@
 
 #include "zmtp_wire.h"
 
+#include "lws_library.h"
 #include "zmq_library.h"
 
 #include "ubii/port_linux.h"
@@ -56,9 +57,24 @@ typedef struct lws_channel {
     queued_message *reserved;
 } lws_channel;
 
+/* What a libwebsockets connection carries as its user pointer starts with one of these: lws hands
+ * every connection's end (WSI_DESTROY) to the first protocol's callback, whatever its kind. */
+typedef enum lws_record_kind {
+    LWS_RECORD_CONNECTION = 1,
+    LWS_RECORD_FOREIGN_FD = 2,
+    LWS_RECORD_WAKE = 3
+} lws_record_kind;
+
+/* The wake-up eventfd's duplicate in the lws wait. */
+typedef struct lws_wake_record {
+    lws_record_kind kind;
+    struct ubii_linux_port *port;
+} lws_wake_record;
+
 /* Another descriptor adopted into libwebsockets (as a duplicate), so that its traffic ends
  * lws_service(): a libzmq socket's or a ZMTP connection's. */
 typedef struct foreign_fd {
+    lws_record_kind kind;
     struct ubii_linux_port *port;
     const void *owner; /* the libzmq socket or ZMTP channel; NULL once released */
     void *zmq_socket;  /* libzmq: ZMQ_EVENTS is read when it fires, consuming its signal */
@@ -110,6 +126,8 @@ enum { MAX_FOREIGN_FDS = 2 * UBII_CHANNEL_COUNT };
 struct ubii_linux_port {
     ubii_linux_port_options options;
     ubii__zmq_library zmq_api; /* loaded only for UBII_LINUX_ZMQ_LIBZMQ */
+    ubii__lws_library lws_api; /* loaded with the first ws:// or http:// channel, or enable_tls */
+    lws_wake_record wake_record;
     void *zmq_context;
     uint32_t monitor_serial;
     channel channels[UBII_CHANNEL_COUNT];

@@ -60,7 +60,7 @@ ubii_status ubii__lws_open(ubii_linux_port *port, ubii_channel which, const char
         return UBII_ERR_UNSUPPORTED;
     }
     if (!ubii__lws_start(port)) {
-        return UBII_ERR_TRANSPORT;
+        return port->lws_api.handle == NULL ? UBII_ERR_UNSUPPORTED : UBII_ERR_TRANSPORT;
     }
     c->kind = kind;
     if (kind == TRANSPORT_WEBSOCKET) {
@@ -82,7 +82,8 @@ void ubii__lws_close(ubii_linux_port *port, ubii_channel which)
         ch->connection = NULL;
         ubii__lws_detach(connection);
         if (wsi != NULL) {
-            lws_set_timeout(wsi, PENDING_TIMEOUT_USER_OK, LWS_TO_KILL_SYNC); /* frees connection */
+            LWS(port)->set_timeout(wsi, PENDING_TIMEOUT_USER_OK,
+                                   LWS_TO_KILL_SYNC); /* frees connection */
         }
     }
     ubii__lws_clear(&ch->inbox);

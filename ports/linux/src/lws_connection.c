@@ -99,6 +99,7 @@ lws_connection *ubii__lws_new_connection(ubii_linux_port *port, ubii_channel whi
 {
     lws_connection *connection = calloc(1, sizeof *connection);
     if (connection != NULL) {
+        connection->kind = LWS_RECORD_CONNECTION;
         connection->port = port;
         connection->owner = port;
         connection->which = which;
@@ -112,7 +113,7 @@ void ubii__lws_connect(ubii_linux_port *port, ubii_channel which, lws_connection
 {
     lws_channel *ch = &port->channels[which].lws;
     ch->connection = connection;
-    connection->wsi = lws_client_connect_via_info(info);
+    connection->wsi = LWS(port)->client_connect_via_info(info);
     if (connection->wsi == NULL && ch->connection == connection) {
         /* Failed at once (lws may already have reported it and freed nothing). */
         ch->connection = NULL;
@@ -124,6 +125,11 @@ void ubii__lws_connect(ubii_linux_port *port, ubii_channel which, lws_connection
     }
 }
 
+lws_connection *ubii__lws_connection_of(void *user)
+{
+    return user != NULL && *(const lws_record_kind *)user == LWS_RECORD_CONNECTION ? user : NULL;
+}
+
 void ubii__lws_connection_destroyed(lws_connection *connection, struct lws *wsi, const char *what)
 {
     lws_channel *ch = ubii__lws_channel_of(connection);
@@ -133,10 +139,11 @@ void ubii__lws_connection_destroyed(lws_connection *connection, struct lws *wsi,
             ubii__lws_lose(connection, what, NULL);
         }
     }
-    connection->owner->lws_connections--;
+    ubii_linux_port *owner = connection->owner;
+    owner->lws_connections--;
     ubii__lws_detach(connection);
     free(connection);
-    lws_set_opaque_user_data(wsi, NULL);
+    LWS(owner)->set_wsi_user(wsi, NULL);
 }
 
 /* What both kinds of connection tell lws: where to, TLS, and the record to report to. */
@@ -151,7 +158,7 @@ void ubii__lws_describe_connection(ubii_linux_port *port, const lws_channel *ch,
     info->path = path;
     info->host = ch->host;
     info->origin = ch->host;
-    info->opaque_user_data = connection;
+    info->userdata = connection; /* each callback's `user` (ubii__lws_connection_of) */
     if (ch->tls) {
         info->ssl_connection = LCCSCF_USE_SSL;
         if (port->options.allow_self_signed) {

@@ -20,8 +20,11 @@ bool ubii__lws_start(ubii_linux_port *port)
     if (port->lws != NULL) {
         return true;
     }
+    if (!ubii__lws_library_load(&port->lws_api, port->last_error, sizeof port->last_error)) {
+        return false;
+    }
     if (port->options.libwebsockets_log_level != 0) {
-        lws_set_log_level(port->options.libwebsockets_log_level, NULL);
+        LWS(port)->set_log_level(port->options.libwebsockets_log_level, NULL);
     }
     struct lws_context_creation_info info;
     memset(&info, 0, sizeof info);
@@ -35,12 +38,12 @@ bool ubii__lws_start(ubii_linux_port *port)
     /* lws reads a socket into this buffer, once per service pass (4 KB by default). */
     info.pt_serv_buf_size = LWS_PRE + RX_CHUNK;
     info.user = port;
-    port->lws = lws_create_context(&info);
+    port->lws = LWS(port)->create_context(&info);
     if (port->lws == NULL) {
         ubii__lws_set_error(port, "libwebsockets context could not be created", NULL);
         return false;
     }
-    port->vhost = lws_get_vhost_by_name(port->lws, "default");
+    port->vhost = LWS(port)->get_vhost_by_name(port->lws, "default");
     ubii__lws_adopt_wake(port);
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
         channel *ch = &port->channels[i];
@@ -57,7 +60,7 @@ bool ubii__lws_start(ubii_linux_port *port)
 void ubii__lws_destroy(ubii_linux_port *port)
 {
     if (port->lws != NULL) {
-        lws_context_destroy(port->lws);
+        LWS(port)->context_destroy(port->lws);
         port->lws = NULL;
         port->vhost = NULL;
     }
@@ -65,6 +68,7 @@ void ubii__lws_destroy(ubii_linux_port *port)
         free(port->foreign_fds[i]);
         port->foreign_fds[i] = NULL;
     }
+    ubii__lws_library_unload(&port->lws_api);
 }
 
 static void wake_up(lws_sorted_usec_list_t *timer)
@@ -103,24 +107,24 @@ static void service_once(ubii_linux_port *port, int timeout_ms)
 {
     enum { SAFETY_MARGIN_MS = 20 };
     if (timeout_ms <= 0) {
-        lws_service(port->lws, -1);
+        LWS(port)->service(port->lws, -1);
         return;
     }
     lws_sorted_usec_list_t timer, safety;
     memset(&timer, 0, sizeof timer);
     memset(&safety, 0, sizeof safety);
-    lws_sul_schedule(port->lws, 0, &timer, wake_up, (lws_usec_t)timeout_ms * LWS_US_PER_MS);
-    lws_sul_schedule(port->lws, 0, &safety, wake_up,
-                     (lws_usec_t)(timeout_ms + SAFETY_MARGIN_MS) * LWS_US_PER_MS);
-    lws_service(port->lws, 0);
-    lws_sul_cancel(&timer);
-    lws_sul_cancel(&safety);
+    LWS(port)->sul_schedule(port->lws, 0, &timer, wake_up, (lws_usec_t)timeout_ms * LWS_US_PER_MS);
+    LWS(port)->sul_schedule(port->lws, 0, &safety, wake_up,
+                            (lws_usec_t)(timeout_ms + SAFETY_MARGIN_MS) * LWS_US_PER_MS);
+    LWS(port)->service(port->lws, 0);
+    LWS(port)->sul_cancel(&timer);
+    LWS(port)->sul_cancel(&safety);
 }
 
 /* Bytes lws holds back, or an open channel's messages not yet handed to lws. */
 static bool has_output(channel *c, lws_connection *connection)
 {
-    return lws_partial_buffered(connection->wsi) ||
+    return LWS(connection->owner)->partial_buffered(connection->wsi) ||
            (writer_of(c) != NULL && ubii__lws_output_waits(connection, &c->lws));
 }
 
@@ -130,7 +134,7 @@ static bool output_can_go_on(ubii_linux_port *port)
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
         lws_connection *connection = writer_of(&port->channels[i]);
         if (connection != NULL && has_output(&port->channels[i], connection) &&
-            !lws_send_pipe_choked(connection->wsi)) {
+            !LWS(port)->send_pipe_choked(connection->wsi)) {
             return true;
         }
     }
@@ -169,7 +173,7 @@ int ubii__lws_fds(ubii_linux_port *port, ubii_pollfd *fds, int capacity)
         if (connection == NULL || connection->wsi == NULL) {
             continue;
         }
-        int fd = (int)lws_get_socket_fd(connection->wsi);
+        int fd = (int)LWS(port)->get_socket_fd(connection->wsi);
         if (fd >= 0) {
             if (count < capacity) {
                 fds[count].fd = fd;

@@ -31,16 +31,19 @@ void ubii__lws_adopt_fd(ubii_linux_port *port, const void *owner, int fd, void *
         desc.type = LWS_ADOPT_RAW_FILE_DESC;
         desc.fd.filefd = dup(fd);
         desc.vh_prot_name = "ubii-foreign-fd";
-        desc.opaque = adopted;
+        adopted->kind = LWS_RECORD_FOREIGN_FD;
         adopted->port = port;
         adopted->owner = owner;
         adopted->zmq_socket = zmq_socket;
         port->foreign_fds[i] = adopted;
-        adopted->wsi = desc.fd.filefd >= 0 ? lws_adopt_descriptor_vhost_via_info(&desc) : NULL;
+        adopted->wsi =
+            desc.fd.filefd >= 0 ? LWS(port)->adopt_descriptor_vhost_via_info(&desc) : NULL;
         if (adopted->wsi == NULL) {
             port->foreign_fds[i] = NULL;
             free(adopted);
+            return;
         }
+        LWS(port)->set_wsi_user(adopted->wsi, adopted);
         return;
     }
 }
@@ -78,7 +81,7 @@ void ubii__lws_release_fd(ubii_linux_port *port, const void *owner)
     adopted->zmq_socket = NULL;
     port->foreign_fds[slot] = NULL;
     if (adopted->wsi != NULL) {
-        lws_set_timeout(adopted->wsi, PENDING_TIMEOUT_USER_OK, LWS_TO_KILL_SYNC);
+        LWS(port)->set_timeout(adopted->wsi, PENDING_TIMEOUT_USER_OK, LWS_TO_KILL_SYNC);
     } else {
         free(adopted);
     }
@@ -89,18 +92,17 @@ void ubii__lws_want_writable(ubii_linux_port *port, const void *owner)
     int slot;
     foreign_fd *adopted = adopted_for(port, owner, &slot);
     if (adopted != NULL && adopted->wsi != NULL) {
-        lws_callback_on_writable(adopted->wsi);
+        LWS(port)->callback_on_writable(adopted->wsi);
     }
 }
 
 int ubii__lws_on_foreign_fd(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
                             size_t len)
 {
-    (void)user;
     (void)in;
     (void)len;
-    foreign_fd *adopted = lws_get_opaque_user_data(wsi);
-    if (adopted == NULL) {
+    foreign_fd *adopted = user;
+    if (adopted == NULL || adopted->kind != LWS_RECORD_FOREIGN_FD) {
         return 0;
     }
     if (reason == LWS_CALLBACK_RAW_RX_FILE && adopted->zmq_socket != NULL) {
@@ -109,7 +111,7 @@ int ubii__lws_on_foreign_fd(struct lws *wsi, enum lws_callback_reasons reason, v
         size_t length = sizeof events;
         adopted->port->zmq_api.getsockopt(adopted->zmq_socket, ZMQ_EVENTS, &events, &length);
     } else if (reason == LWS_CALLBACK_RAW_CLOSE_FILE) {
-        lws_set_opaque_user_data(wsi, NULL);
+        LWS(adopted->port)->set_wsi_user(wsi, NULL);
         if (adopted->owner == NULL) {
             free(adopted); /* released: nobody else holds it */
         } else {

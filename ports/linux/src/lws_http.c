@@ -9,11 +9,11 @@
 int ubii__lws_on_http(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
                       size_t len)
 {
-    (void)user;
-    lws_connection *connection = lws_get_opaque_user_data(wsi);
+    lws_connection *connection = ubii__lws_connection_of(user);
     if (connection == NULL) {
         return 0;
     }
+    const ubii__lws_library *lws = LWS(connection->owner);
     lws_channel *ch = ubii__lws_channel_of(connection);
     switch (reason) {
     case LWS_CALLBACK_CLIENT_APPEND_HANDSHAKE_HEADER: {
@@ -23,37 +23,37 @@ int ubii__lws_on_http(struct lws *wsi, enum lws_callback_reasons reason, void *u
         unsigned char **p = in;
         unsigned char *end = *p + len;
         static const char type[] = "application/octet-stream";
-        if (lws_add_http_header_by_token(wsi, WSI_TOKEN_HTTP_CONTENT_TYPE,
-                                         (const unsigned char *)type, (int)sizeof type - 1, p,
-                                         end) ||
-            lws_add_http_header_content_length(wsi, connection->request_size, p, end)) {
+        if (lws->add_http_header_by_token(wsi, WSI_TOKEN_HTTP_CONTENT_TYPE,
+                                          (const unsigned char *)type, (int)sizeof type - 1, p,
+                                          end) ||
+            lws->add_http_header_content_length(wsi, connection->request_size, p, end)) {
             return -1;
         }
-        lws_client_http_body_pending(wsi, 1);
-        lws_callback_on_writable(wsi);
+        lws->client_http_body_pending(wsi, 1);
+        lws->callback_on_writable(wsi);
         break;
     }
     case LWS_CALLBACK_CLIENT_HTTP_WRITEABLE:
         if (ch == NULL || connection->request == NULL) {
             return -1;
         }
-        if (lws_write(wsi, connection->request + LWS_PRE, connection->request_size,
-                      LWS_WRITE_HTTP_FINAL) < 0) {
+        if (lws->write(wsi, connection->request + LWS_PRE, connection->request_size,
+                       LWS_WRITE_HTTP_FINAL) < 0) {
             ubii__lws_lose(connection, "HTTP request could not be written", NULL);
             return -1;
         }
-        lws_client_http_body_pending(wsi, 0);
+        lws->client_http_body_pending(wsi, 0);
         connection->setup_written = true;
         break;
     case LWS_CALLBACK_ESTABLISHED_CLIENT_HTTP:
-        connection->status = (int)lws_http_client_http_response(wsi);
+        connection->status = (int)lws->http_client_http_response(wsi);
         connection->assembled = 0;
         break;
     case LWS_CALLBACK_RECEIVE_CLIENT_HTTP: {
         char buffer[LWS_PRE + 4096];
         char *start = buffer + LWS_PRE;
         int length = (int)sizeof buffer - LWS_PRE;
-        if (lws_http_client_read(wsi, &start, &length) < 0) {
+        if (lws->http_client_read(wsi, &start, &length) < 0) {
             return -1;
         }
         break;
@@ -84,14 +84,8 @@ int ubii__lws_on_http(struct lws *wsi, enum lws_callback_reasons reason, void *u
     case LWS_CALLBACK_CLIENT_CONNECTION_ERROR:
         ubii__lws_lose(connection, "HTTP connection failed", in != NULL ? (const char *)in : NULL);
         break;
-    case LWS_CALLBACK_WSI_DESTROY:
-        if (ch != NULL && ch->connection == connection) {
-            ch->connection = NULL;
-        }
-        connection->owner->lws_connections--;
-        ubii__lws_detach(connection);
-        free(connection);
-        lws_set_opaque_user_data(wsi, NULL);
+    case LWS_CALLBACK_WSI_DESTROY: /* lws gives it to the first protocol (WebSocket) instead */
+        ubii__lws_connection_destroyed(connection, wsi, "HTTP connection ended");
         break;
     default:
         break;

@@ -31,7 +31,11 @@ enum {
 /* Outgoing messages keep LWS_PRE bytes before their data: room for a frame header. */
 typedef char headroom_holds_a_websocket_header[LWS_PRE >= UBII_WS_MAX_CLIENT_HEADER ? 1 : -1];
 
+/* The port's libwebsockets functions (lws_library.h): every call into lws goes through them. */
+#define LWS(port) (&(port)->lws_api)
+
 typedef struct lws_connection {
+    lws_record_kind kind;   /* LWS_RECORD_CONNECTION */
     ubii_linux_port *port;  /* NULL once the channel has let go of it */
     ubii_linux_port *owner; /* the port, always: counts its live connections */
     ubii_channel which;
@@ -78,6 +82,9 @@ lws_connection *ubii__lws_new_connection(ubii_linux_port *port, ubii_channel whi
  * LOST with `failure`. */
 void ubii__lws_connect(ubii_linux_port *port, ubii_channel which, lws_connection *connection,
                        struct lws_client_connect_info *info, const char *failure);
+/* The connection a callback's `user` is, or NULL if it is none (another record's end, or a
+ * callback of lws itself). */
+lws_connection *ubii__lws_connection_of(void *user);
 /* WSI_DESTROY: reports the end to a channel still open, then frees the record. */
 void ubii__lws_connection_destroyed(lws_connection *connection, struct lws *wsi, const char *what);
 /* What every kind of connection tells lws: where to, TLS, and the record to report to. */

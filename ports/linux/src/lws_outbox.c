@@ -7,8 +7,9 @@
 
 static const uint8_t *next_mask(lws_connection *connection, struct lws *wsi)
 {
+    const ubii__lws_library *lws = LWS(connection->owner);
     if (connection->masks_left < 4) {
-        if (lws_get_random(lws_get_context(wsi), connection->masks, MASK_POOL) != MASK_POOL) {
+        if (lws->get_random(lws->get_context(wsi), connection->masks, MASK_POOL) != MASK_POOL) {
             return NULL;
         }
         connection->masks_left = MASK_POOL;
@@ -37,8 +38,9 @@ static uint8_t *frame_in_place(lws_connection *connection, struct lws *wsi, uint
  * only in part and keeps the rest, to send one piece per service pass. */
 static const char *write_piece(lws_connection *connection, struct lws *wsi)
 {
+    const ubii__lws_library *lws = LWS(connection->owner);
     size_t piece = connection->sending_left < RX_CHUNK ? connection->sending_left : RX_CHUNK;
-    if (lws_write(wsi, connection->sending_next, piece, LWS_WRITE_RAW) < 0) {
+    if (lws->write(wsi, connection->sending_next, piece, LWS_WRITE_RAW) < 0) {
         return "write to the master failed";
     }
     connection->sending_next += piece;
@@ -57,6 +59,7 @@ static const char *write_piece(lws_connection *connection, struct lws *wsi)
  * and sends it before anything else. */
 static const char *write_frames(lws_connection *connection, lws_channel *ch, struct lws *wsi)
 {
+    const ubii__lws_library *lws = LWS(connection->owner);
     static const char no_mask[] = "no random bytes for WebSocket masking keys";
     queued_message *message = ch->outbox.head;
     size_t framed = ubii__ws_client_header_size(message->size) + message->size;
@@ -93,7 +96,7 @@ static const char *write_frames(lws_connection *connection, lws_channel *ch, str
         }
         length += framed;
     }
-    return lws_write(wsi, start, length, LWS_WRITE_RAW) < 0 ? "write to the master failed" : NULL;
+    return lws->write(wsi, start, length, LWS_WRITE_RAW) < 0 ? "write to the master failed" : NULL;
 }
 
 bool ubii__lws_output_waits(const lws_connection *connection, const lws_channel *ch)
@@ -103,6 +106,7 @@ bool ubii__lws_output_waits(const lws_connection *connection, const lws_channel 
 
 int ubii__lws_write_outbox(lws_connection *connection, lws_channel *ch, struct lws *wsi)
 {
+    const ubii__lws_library *lws = LWS(connection->owner);
     /* As much as the socket takes now: one message per callback would cap a node polled once per
      * frame at one message per frame. */
     while (ubii__lws_output_waits(connection, ch)) {
@@ -112,12 +116,12 @@ int ubii__lws_write_outbox(lws_connection *connection, lws_channel *ch, struct l
             ubii__lws_lose(connection, failure, NULL);
             return -1;
         }
-        if (!ubii__lws_output_waits(connection, ch) || lws_send_pipe_choked(wsi)) {
+        if (!ubii__lws_output_waits(connection, ch) || lws->send_pipe_choked(wsi)) {
             break;
         }
     }
     if (ubii__lws_output_waits(connection, ch)) {
-        lws_callback_on_writable(wsi);
+        lws->callback_on_writable(wsi);
     }
     return 0;
 }

@@ -8,15 +8,21 @@
 int ubii__lws_on_wake(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
                       size_t len)
 {
-    (void)user;
     (void)in;
     (void)len;
+    lws_wake_record *record = user;
+    if (record == NULL || record->kind != LWS_RECORD_WAKE) {
+        return 0;
+    }
     if (reason == LWS_CALLBACK_RAW_RX_FILE) {
-        /* Reading resets the counter, so the fd stops being readable until the next wake. */
+        /* Reading resets the counter (the duplicate shares it), so the fd stops being readable
+         * until the next wake. */
         uint64_t count;
-        if (read((int)lws_get_socket_fd(wsi), &count, sizeof count) < 0) {
+        if (read(record->port->wake_fd, &count, sizeof count) < 0) {
             return 0; /* EAGAIN: another wait drained it first */
         }
+    } else if (reason == LWS_CALLBACK_RAW_CLOSE_FILE) {
+        LWS(record->port)->set_wsi_user(wsi, NULL);
     }
     return 0;
 }
@@ -33,8 +39,16 @@ void ubii__lws_adopt_wake(ubii_linux_port *port)
     desc.type = LWS_ADOPT_RAW_FILE_DESC;
     desc.fd.filefd = dup(port->wake_fd);
     desc.vh_prot_name = "ubii-wake";
-    if (desc.fd.filefd >= 0 && lws_adopt_descriptor_vhost_via_info(&desc) == NULL) {
+    struct lws *wsi =
+        desc.fd.filefd >= 0 ? LWS(port)->adopt_descriptor_vhost_via_info(&desc) : NULL;
+    if (wsi == NULL) {
         /* lws failed before taking the fd: the wait then still ends by its timeout. */
-        close(desc.fd.filefd);
+        if (desc.fd.filefd >= 0) {
+            close(desc.fd.filefd);
+        }
+        return;
     }
+    port->wake_record.kind = LWS_RECORD_WAKE;
+    port->wake_record.port = port;
+    LWS(port)->set_wsi_user(wsi, &port->wake_record);
 }

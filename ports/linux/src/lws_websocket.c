@@ -8,11 +8,11 @@
 int ubii__lws_on_websocket(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
                            size_t len)
 {
-    (void)user;
-    lws_connection *connection = lws_get_opaque_user_data(wsi);
+    lws_connection *connection = ubii__lws_connection_of(user);
     if (connection == NULL) {
         return 0;
     }
+    const ubii__lws_library *lws = LWS(connection->owner);
     lws_channel *ch = ubii__lws_channel_of(connection);
     switch (reason) {
     case LWS_CALLBACK_CLIENT_APPEND_HANDSHAKE_HEADER:
@@ -22,7 +22,7 @@ int ubii__lws_on_websocket(struct lws *wsi, enum lws_callback_reasons reason, vo
         if (ch != NULL) {
             connection->port->channels[connection->which].state = UBII_CHANNEL_OPEN;
             if (ch->outbox.count > 0) {
-                lws_callback_on_writable(wsi);
+                lws->callback_on_writable(wsi);
             }
         }
         break;
@@ -30,15 +30,15 @@ int ubii__lws_on_websocket(struct lws *wsi, enum lws_callback_reasons reason, vo
         if (ch == NULL) {
             return -1;
         }
-        if (lws_is_first_fragment(wsi)) {
+        if (lws->is_first_fragment(wsi)) {
             connection->assembled = 0;
-            connection->assembly_flags = lws_frame_is_binary(wsi) ? 0 : UBII_MESSAGE_TEXT;
+            connection->assembly_flags = lws->frame_is_binary(wsi) ? 0 : UBII_MESSAGE_TEXT;
         }
         if (!ubii__lws_append(connection, in, len, connection->port->options.max_message_size)) {
             ubii__lws_lose(connection, "message over the size limit", NULL);
             return -1;
         }
-        if (lws_is_final_fragment(wsi) && lws_remaining_packet_payload(wsi) == 0) {
+        if (lws->is_final_fragment(wsi) && lws->remaining_packet_payload(wsi) == 0) {
             ubii__lws_deliver_assembled(connection, ch);
         }
         break;

@@ -2,22 +2,16 @@
 #include "zmq_library.h"
 
 #include <dlfcn.h>
-#include <stdio.h>
 #include <string.h>
+
+#include "dynamic_library.h"
 
 /* The soname Debian's libzmq5 installs; the unversioned name only exists with libzmq3-dev. */
 static const char *const library_names[] = {"libzmq.so.5", "libzmq.so"};
 
 static bool resolve(void *handle, const char *name, void *function, char *error, size_t error_size)
 {
-    void *address = dlsym(handle, name);
-    if (address == NULL) {
-        snprintf(error, error_size, "libzmq has no %s", name);
-        return false;
-    }
-    /* dlsym gives an object pointer; POSIX guarantees it converts to the function's type. */
-    memcpy(function, &address, sizeof address);
-    return true;
+    return ubii__library_resolve(handle, "libzmq", name, function, error, error_size);
 }
 
 bool ubii__zmq_library_load(ubii__zmq_library *library, char *error, size_t error_size)
@@ -25,12 +19,9 @@ bool ubii__zmq_library_load(ubii__zmq_library *library, char *error, size_t erro
     if (library->handle != NULL) {
         return true;
     }
-    void *handle = NULL;
-    for (size_t i = 0; handle == NULL && i < sizeof library_names / sizeof library_names[0]; ++i) {
-        handle = dlopen(library_names[i], RTLD_NOW | RTLD_LOCAL);
-    }
+    void *handle = ubii__library_open(library_names, sizeof library_names / sizeof library_names[0],
+                                      0, "libzmq", error, error_size);
     if (handle == NULL) {
-        snprintf(error, error_size, "libzmq could not be loaded: %s", dlerror());
         return false;
     }
     ubii__zmq_library loaded;

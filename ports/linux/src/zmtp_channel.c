@@ -5,8 +5,8 @@
  * than all the rest of receiving it. Here bytes wait in the socket until the node is polled, so a
  * node polled once per frame takes a frame's worth of messages in a few reads, and its own go out
  * together in one write. The master sees the same REQ or DEALER peer either way.
- * Why not libwebsockets' raw sockets: a node that speaks only tcp:// then never starts
- * libwebsockets, whose context alone keeps about 1 MiB resident.
+ * Why not libwebsockets' raw sockets: a node that speaks only tcp:// then never loads
+ * libwebsockets and the OpenSSL it brings (lws_library.h).
  *
  * Buffers: what arrives is read into `rx` and handed to the core in place (lent until the next
  * receive); what the core sends is framed in place at the end of `tx`, behind our greeting. */

@@ -3,8 +3,11 @@
 
 /* The Linux port: ZeroMQ (tcp://) for services and topic data, libwebsockets for WebSocket topic
  * data (ws://, wss://) and binary HTTP services (http://, https://). Unlike the core, this port
- * allocates (libzmq and libwebsockets do). It starts no thread, unless tcp:// is spoken through
- * libzmq (UBII_LINUX_ZMQ_LIBZMQ, or zmq_only), whose threads then run. Host names in URLs that
+ * allocates. libwebsockets and libzmq are loaded at run time, each by the first port that uses it
+ * (a node that speaks only tcp:// in its own thread maps neither); where one is not installed,
+ * what needs it gives UBII_ERR_UNSUPPORTED and ubii_linux_port_last_error says so. The port starts
+ * no thread, unless tcp:// is spoken through libzmq (UBII_LINUX_ZMQ_LIBZMQ, or zmq_only), whose
+ * threads then run. Host names in URLs that
  * libzmq does not connect are resolved synchronously when a connection starts; where a frame must
  * never stall, give an IP address.
  *
@@ -80,9 +83,9 @@ UBII_API void ubii_linux_port_wake(ubii_linux_port *port);
 UBII_API const char *ubii_linux_port_last_error(const ubii_linux_port *port);
 
 /* Creates a port; `options` may be NULL for the defaults. UBII_ERR_UNSUPPORTED for the libzmq
- * engine without libzmq installed, UBII_ERR_TRANSPORT if libzmq or libwebsockets fail to start
- * (e.g. an unreadable ca_file); ubii_linux_port_last_error is unavailable then: nothing is
- * returned. */
+ * engine without libzmq installed, or enable_tls without libwebsockets; UBII_ERR_TRANSPORT if
+ * libzmq or libwebsockets fail to start (e.g. an unreadable ca_file); ubii_linux_port_last_error
+ * is unavailable then: nothing is returned. */
 UBII_API ubii_status ubii_linux_port_create(ubii_linux_port **port,
                                             const ubii_linux_port_options *options);
 /* The port as a node runs on it; valid until ubii_linux_port_destroy. */
