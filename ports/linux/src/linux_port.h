@@ -131,7 +131,7 @@ struct ubii_linux_port {
     void *zmq_context;
     uint32_t monitor_serial;
     channel channels[UBII_CHANNEL_COUNT];
-    struct lws_context *lws; /* created on the first WebSocket or HTTP channel */
+    struct lws_context *lws; /* created with the first ws:// or http:// channel, or enable_tls */
     struct lws_vhost *vhost;
     foreign_fd *foreign_fds[MAX_FOREIGN_FDS];
     int lws_connections;   /* live WebSocket/HTTP connections, closing ones included */

@@ -7,9 +7,8 @@
  * (a node that speaks only tcp:// in its own thread maps neither); where one is not installed,
  * what needs it gives UBII_ERR_UNSUPPORTED and ubii_linux_port_last_error says so. The port starts
  * no thread, unless tcp:// is spoken through libzmq (UBII_LINUX_ZMQ_LIBZMQ, or zmq_only), whose
- * threads then run. Host names in URLs that
- * libzmq does not connect are resolved synchronously when a connection starts; where a frame must
- * never stall, give an IP address.
+ * threads then run. Host names in URLs that libzmq does not connect are resolved synchronously
+ * when a connection starts; where a frame must never stall, give an IP address.
  *
  *     ubii_linux_port *linux_port;
  *     ubii_linux_port_create(&linux_port, NULL);
