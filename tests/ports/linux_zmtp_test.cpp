@@ -135,6 +135,22 @@ class Peer
     uint16_t port_ = 0;
 };
 
+// Waits on the port and serves the peer between its waits until `done`, at most `limit`. `done`
+// may take what it looks at (received messages): it is asked once per round.
+bool pump_until(const ubii_port &port, Peer &peer, const std::function<bool()> &done,
+                std::chrono::milliseconds limit = std::chrono::seconds(2), int wait_ms = 5)
+{
+    const auto deadline = std::chrono::steady_clock::now() + limit;
+    while (!done()) {
+        if (std::chrono::steady_clock::now() > deadline) {
+            return false;
+        }
+        port.vtable->wait(port.context, wait_ms);
+        peer.serve();
+    }
+    return true;
+}
+
 class InThreadZmtp : public ::testing::Test
 {
   protected:
@@ -159,15 +175,7 @@ class InThreadZmtp : public ::testing::Test
     // Waits and serves the peer until `done`, at most two seconds.
     bool pump_until(const std::function<bool()> &done)
     {
-        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
-        while (!done()) {
-            if (std::chrono::steady_clock::now() > deadline) {
-                return false;
-            }
-            port_.vtable->wait(port_.context, 5);
-            peer_.serve();
-        }
-        return true;
+        return ::pump_until(port_, peer_, done);
     }
     void open_topic()
     {
@@ -284,17 +292,12 @@ TEST(InThreadZmtpStream, MessagesOfEverySizeInAnySlicesArriveWholeAndInOrder)
     ubii_port port = ubii_linux_port_get(linux_port);
     ASSERT_EQ(port.vtable->open(port.context, UBII_CHANNEL_TOPIC, peer.url().c_str(), "client-7"),
               UBII_OK);
-    auto pump_until = [&](const std::function<bool()> &done) {
-        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-        while (!done() && std::chrono::steady_clock::now() < deadline) {
-            port.vtable->wait(port.context, 1);
-            peer.serve();
-        }
-        return done();
+    auto pump = [&](const std::function<bool()> &done) {
+        return pump_until(port, peer, done, std::chrono::seconds(20), 1);
     };
-    ASSERT_TRUE(pump_until([&] { return peer.connected() && peer.received.size() >= 64; }));
+    ASSERT_TRUE(pump([&] { return peer.connected() && peer.received.size() >= 64; }));
     peer.send_bytes(peer_handshake("ROUTER"));
-    ASSERT_TRUE(pump_until(
+    ASSERT_TRUE(pump(
         [&] { return port.vtable->state(port.context, UBII_CHANNEL_TOPIC) == UBII_CHANNEL_OPEN; }));
 
     std::mt19937 random(7);
@@ -314,7 +317,7 @@ TEST(InThreadZmtpStream, MessagesOfEverySizeInAnySlicesArriveWholeAndInOrder)
     std::vector<std::string> got;
     size_t at = 0;
     size_t replies = 0;
-    ASSERT_TRUE(pump_until([&] {
+    ASSERT_TRUE(pump([&] {
         const size_t slices[] = {1, 7, 100, 4096, 65536, 1 << 20};
         at +=
             peer.send_some(stream.data() + at, std::min(stream.size() - at, slices[random() % 6]));
@@ -354,7 +357,7 @@ TEST(InThreadZmtpStream, MessagesOfEverySizeInAnySlicesArriveWholeAndInOrder)
         acks.insert(acks.end(), ack.begin(), ack.end());
     }
     ASSERT_GT(replies, 0u);
-    EXPECT_TRUE(pump_until([&] {
+    EXPECT_TRUE(pump([&] {
         return peer.received.size() >= acks.size() &&
                Bytes(peer.received.end() - static_cast<long>(acks.size()), peer.received.end()) ==
                    acks;
@@ -449,17 +452,10 @@ TEST(LinuxPortDefaults, TcpRunsInTheCallersThread)
     ubii_port port = ubii_linux_port_get(linux_port);
     ASSERT_EQ(port.vtable->open(port.context, UBII_CHANNEL_TOPIC, peer.url().c_str(), "client-7"),
               UBII_OK);
-    auto pump_until = [&](const std::function<bool()> &done) {
-        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
-        while (!done() && std::chrono::steady_clock::now() < deadline) {
-            port.vtable->wait(port.context, 5);
-            peer.serve();
-        }
-        return done();
-    };
-    ASSERT_TRUE(pump_until([&] { return peer.connected() && peer.received.size() >= 64; }));
+    auto pump = [&](const std::function<bool()> &done) { return pump_until(port, peer, done); };
+    ASSERT_TRUE(pump([&] { return peer.connected() && peer.received.size() >= 64; }));
     peer.send_bytes(peer_handshake("ROUTER"));
-    ASSERT_TRUE(pump_until(
+    ASSERT_TRUE(pump(
         [&] { return port.vtable->state(port.context, UBII_CHANNEL_TOPIC) == UBII_CHANNEL_OPEN; }));
     EXPECT_EQ(thread_count(), threads_before);
     ubii_linux_port_destroy(linux_port);
@@ -540,17 +536,10 @@ TEST(LinuxPortDefaults, TcpBesideAWebSocketEndsTheWaitThatLibwebsocketsDrives)
     ASSERT_EQ(port.vtable->send_begin(port.context, UBII_CHANNEL_SERVICE, 7, &buffer), UBII_OK);
     std::memcpy(buffer, "request", 7);
     ASSERT_EQ(port.vtable->send_commit(port.context, UBII_CHANNEL_SERVICE, 0), UBII_OK);
-    auto pump_until = [&](const std::function<bool()> &done) {
-        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
-        while (!done() && std::chrono::steady_clock::now() < deadline) {
-            port.vtable->wait(port.context, 5);
-            peer.serve();
-        }
-        return done();
-    };
-    ASSERT_TRUE(pump_until([&] { return peer.connected() && peer.received.size() >= 64; }));
+    auto pump = [&](const std::function<bool()> &done) { return pump_until(port, peer, done); };
+    ASSERT_TRUE(pump([&] { return peer.connected() && peer.received.size() >= 64; }));
     peer.send_bytes(peer_handshake("REP"));
-    ASSERT_TRUE(pump_until([&] {
+    ASSERT_TRUE(pump([&] {
         return std::string(peer.received.begin(), peer.received.end()).find("request") !=
                std::string::npos;
     }));
