@@ -2,6 +2,7 @@
 /* The Linux port's vtable: picks the transport by URL scheme and drives the I/O. */
 #include <errno.h>
 #include <poll.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/eventfd.h>
@@ -10,6 +11,14 @@
 
 #include "linux_port.h"
 #include "ubii/config.h"
+
+void ubii__port_error(ubii_linux_port *port, const char *what, const char *detail)
+{
+    snprintf(port->last_error, sizeof port->last_error, "%s%s%s", what, detail ? ": " : "",
+             detail ? detail : "");
+}
+
+static int poll_fds(void *context, ubii_pollfd *fds, int capacity);
 
 static bool starts_with(const char *text, const char *prefix)
 {
@@ -196,29 +205,26 @@ static void drain_wake(ubii_linux_port *port)
     }
 }
 
-/* The in-thread ZMTP connections' fds and the wake fd, in poll(2): the wait without libzmq and
- * libwebsockets. */
+/* The wait without libzmq and libwebsockets: poll(2) over the port's own pollfds, which are then
+ * the in-thread ZMTP connections' (one per channel at most) and the wake fd, last. */
 static ubii_status poll_plain(ubii_linux_port *port, int timeout_ms)
 {
-    struct pollfd fds[UBII_CHANNEL_COUNT + 1];
-    nfds_t count = 0;
-    for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
-        const channel *ch = &port->channels[i];
-        short events = ch->kind == TRANSPORT_ZMTP ? ubii__zmtp_events(port, ch) : 0;
-        if (events != 0) {
-            fds[count].fd = ch->zmtp.fd;
-            fds[count].events = events;
-            fds[count++].revents = 0;
-        }
+    enum { MOST = UBII_CHANNEL_COUNT + 1 };
+    ubii_pollfd wanted[MOST];
+    int count = poll_fds(port, wanted, MOST);
+    if (count > MOST) {
+        return UBII_ERR_STATE; /* a libzmq or libwebsockets fd: their own waits take those */
     }
-    struct pollfd *wake = &fds[count++];
-    wake->fd = port->wake_fd;
-    wake->events = POLLIN;
-    wake->revents = 0;
-    if (poll(fds, count, timeout_ms) < 0 && errno != EINTR) {
+    struct pollfd fds[MOST];
+    for (int i = 0; i < count; ++i) {
+        fds[i].fd = wanted[i].fd;
+        fds[i].events = wanted[i].events;
+        fds[i].revents = 0;
+    }
+    if (poll(fds, (nfds_t)count, timeout_ms) < 0 && errno != EINTR) {
         return UBII_ERR_TRANSPORT;
     }
-    if (wake->revents & POLLIN) {
+    if (fds[count - 1].revents & POLLIN) {
         drain_wake(port);
     }
     return UBII_OK;

@@ -140,6 +140,9 @@ struct ubii_linux_port {
     int wake_fd; /* eventfd: ubii_linux_port_wake() makes it readable, ending a wait */
 };
 
+/* linux_port.c: sets the port's last error, "what: detail" (detail may be NULL). */
+void ubii__port_error(ubii_linux_port *port, const char *what, const char *detail);
+
 /* lws_context.c: the libwebsockets context and the wait. */
 /* Starts libwebsockets (once); false if it cannot. */
 bool ubii__lws_start(ubii_linux_port *port);

@@ -53,7 +53,7 @@ ubii_status ubii__lws_open(ubii_linux_port *port, ubii_channel which, const char
         return UBII_ERR_UNSUPPORTED; /* topic data over WebSocket, services over HTTP */
     }
     if (ch->tls && !port->options.enable_tls) {
-        ubii__lws_set_error(port, "TLS URL on a port created without enable_tls", url);
+        ubii__port_error(port, "TLS URL on a port created without enable_tls", url);
         return UBII_ERR_UNSUPPORTED;
     }
     if (port->options.zmq_only) {

@@ -2,7 +2,6 @@
  * (a record outlives its channel if need be: closing a channel detaches the record and asks lws to
  * kill the connection; lws frees it on WSI_DESTROY), and what arrives on them. The protocol
  * files (lws_websocket.c, lws_http.c) frame and parse; this file owns. */
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -60,12 +59,6 @@ void ubii__lws_clear(message_queue *queue)
 
 /* ---- records ---- */
 
-void ubii__lws_set_error(ubii_linux_port *port, const char *what, const char *detail)
-{
-    snprintf(port->last_error, sizeof port->last_error, "%s%s%s", what, detail ? ": " : "",
-             detail ? detail : "");
-}
-
 lws_channel *ubii__lws_channel_of(lws_connection *connection)
 {
     return connection->port != NULL ? &connection->port->channels[connection->which].lws : NULL;
@@ -78,7 +71,7 @@ void ubii__lws_lose(lws_connection *connection, const char *what, const char *de
         connection->port->channels[connection->which].state == UBII_CHANNEL_LOST) {
         return;
     }
-    ubii__lws_set_error(connection->port, what, detail);
+    ubii__port_error(connection->port, what, detail);
     connection->port->channels[connection->which].state = UBII_CHANNEL_LOST;
 }
 
@@ -121,7 +114,7 @@ void ubii__lws_connect(ubii_linux_port *port, ubii_channel which, lws_connection
         ubii__lws_detach(connection);
         free(connection);
         port->channels[which].state = UBII_CHANNEL_LOST;
-        ubii__lws_set_error(port, failure, NULL);
+        ubii__port_error(port, failure, NULL);
     }
 }
 

@@ -40,7 +40,7 @@ bool ubii__lws_start(ubii_linux_port *port)
     info.user = port;
     port->lws = LWS(port)->create_context(&info);
     if (port->lws == NULL) {
-        ubii__lws_set_error(port, "libwebsockets context could not be created", NULL);
+        ubii__port_error(port, "libwebsockets context could not be created", NULL);
         return false;
     }
     port->vhost = LWS(port)->get_vhost_by_name(port->lws, "default");

@@ -84,9 +84,6 @@ int ubii__lws_on_http(struct lws *wsi, enum lws_callback_reasons reason, void *u
     case LWS_CALLBACK_CLIENT_CONNECTION_ERROR:
         ubii__lws_lose(connection, "HTTP connection failed", in != NULL ? (const char *)in : NULL);
         break;
-    case LWS_CALLBACK_WSI_DESTROY: /* lws gives it to the first protocol (WebSocket) instead */
-        ubii__lws_connection_destroyed(connection, wsi, "HTTP connection ended");
-        break;
     default:
         break;
     }

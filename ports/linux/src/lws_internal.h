@@ -69,7 +69,6 @@ queued_message *ubii__lws_new_message(size_t size, size_t headroom);
 void ubii__lws_push(message_queue *queue, queued_message *message);
 queued_message *ubii__lws_pop(message_queue *queue);
 void ubii__lws_clear(message_queue *queue);
-void ubii__lws_set_error(ubii_linux_port *port, const char *what, const char *detail);
 /* The channel the connection serves, or NULL once the channel has let go of it. */
 lws_channel *ubii__lws_channel_of(lws_connection *connection);
 /* Marks the channel LOST with a reason. */

@@ -55,7 +55,10 @@ int ubii__lws_on_websocket(struct lws *wsi, enum lws_callback_reasons reason, vo
         ubii__lws_lose(connection, "WebSocket closed by the master", NULL);
         break;
     case LWS_CALLBACK_WSI_DESTROY:
-        ubii__lws_connection_destroyed(connection, wsi, "WebSocket connection ended");
+        /* Every connection's end comes here, the HTTP ones' too (the first protocol's). */
+        ubii__lws_connection_destroyed(connection, wsi,
+                                       connection->http ? "HTTP connection ended"
+                                                        : "WebSocket connection ended");
         break;
     default:
         break;

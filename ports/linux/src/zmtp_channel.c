@@ -38,12 +38,6 @@ enum {
     KEPT_CAPACITY = 256 * 1024
 };
 
-static void set_error(ubii_linux_port *port, const char *what, const char *detail)
-{
-    snprintf(port->last_error, sizeof port->last_error, "%s%s%s", what, detail ? ": " : "",
-             detail ? detail : "");
-}
-
 static void close_socket(ubii_linux_port *port, zmtp_channel *z)
 {
     if (z->fd >= 0) {
@@ -58,7 +52,7 @@ static void close_socket(ubii_linux_port *port, zmtp_channel *z)
 static void lose(ubii_linux_port *port, channel *ch, const char *what, const char *detail)
 {
     if (ch->state != UBII_CHANNEL_LOST) {
-        set_error(port, what, detail);
+        ubii__port_error(port, what, detail);
         ch->state = UBII_CHANNEL_LOST;
     }
     close_socket(port, &ch->zmtp);
@@ -317,7 +311,7 @@ static ubii_zmtp_unit unit_at(ubii_linux_port *port, channel *ch, size_t offset,
         }
         break;
     case UBII_ZMTP_MISSHAPEN: /* dropped whole, as libzmq's DEALER and REQ do */
-        set_error(port, "a ZMQ message of a shape the master never sends was dropped", NULL);
+        ubii__port_error(port, "a ZMQ message of a shape the master never sends was dropped", NULL);
         break;
     case UBII_ZMTP_TOO_LARGE:
         lose(port, ch, "message over the size limit", NULL);
