@@ -233,7 +233,7 @@ static ubii_status poll_plain(ubii_linux_port *port, int timeout_ms)
 static ubii_status wait_for_any(ubii_linux_port *port, int timeout_ms)
 {
     if (port->lws != NULL && lws_in_use(port)) {
-        /* The wake fd and the others are adopted into lws; its callback drains the wake fd. */
+        /* The wake fd and the others are adopted into lws, which only waits on them. */
         for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
             channel *ch = &port->channels[i];
             if (ch->kind == TRANSPORT_ZMTP && (ubii__zmtp_events(port, ch) & POLLOUT)) {
@@ -241,6 +241,7 @@ static ubii_status wait_for_any(ubii_linux_port *port, int timeout_ms)
             }
         }
         ubii__lws_service(port, zmq_message_waiting(port) ? 0 : timeout_ms);
+        drain_wake(port);
         return UBII_OK;
     }
     if (port->zmq_api.handle == NULL) {

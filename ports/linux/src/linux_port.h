@@ -61,22 +61,15 @@ typedef struct lws_channel {
  * every connection's end (WSI_DESTROY) to the first protocol's callback, whatever its kind. */
 typedef enum lws_record_kind {
     LWS_RECORD_CONNECTION = 1,
-    LWS_RECORD_FOREIGN_FD = 2,
-    LWS_RECORD_WAKE = 3
+    LWS_RECORD_FOREIGN_FD = 2
 } lws_record_kind;
 
-/* The wake-up eventfd's duplicate in the lws wait. */
-typedef struct lws_wake_record {
-    lws_record_kind kind;
-    struct ubii_linux_port *port;
-} lws_wake_record;
-
 /* Another descriptor adopted into libwebsockets (as a duplicate), so that its traffic ends
- * lws_service(): a libzmq socket's or a ZMTP connection's. */
+ * lws_service(): a libzmq socket's, a ZMTP connection's or the wake-up eventfd. */
 typedef struct foreign_fd {
     lws_record_kind kind;
     struct ubii_linux_port *port;
-    const void *owner; /* the libzmq socket or ZMTP channel; NULL once released */
+    const void *owner; /* libzmq socket, ZMTP channel or &wake_fd; NULL once released */
     void *zmq_socket;  /* libzmq: ZMQ_EVENTS is read when it fires, consuming its signal */
     struct lws *wsi;
 } foreign_fd;
@@ -119,15 +112,14 @@ typedef struct channel {
     zmtp_channel zmtp;
 } channel;
 
-/* Descriptors of libzmq's sockets and ZMTP's adopted into libwebsockets while it drives the
- * wait (lws_foreign_fds.c): at most two per channel. */
-enum { MAX_FOREIGN_FDS = 2 * UBII_CHANNEL_COUNT };
+/* Descriptors adopted into libwebsockets while it drives the wait (lws_foreign_fds.c): at most
+ * two per channel (libzmq's socket and monitor), and the wake-up eventfd. */
+enum { MAX_FOREIGN_FDS = 2 * UBII_CHANNEL_COUNT + 1 };
 
 struct ubii_linux_port {
     ubii_linux_port_options options;
     ubii__zmq_library zmq_api; /* loaded only for UBII_LINUX_ZMQ_LIBZMQ */
     ubii__lws_library lws_api; /* loaded with the first ws:// or http:// channel, or enable_tls */
-    lws_wake_record wake_record;
     void *zmq_context;
     uint32_t monitor_serial;
     channel channels[UBII_CHANNEL_COUNT];

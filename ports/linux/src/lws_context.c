@@ -12,7 +12,6 @@ static const struct lws_protocols protocols[] = {
     {"ubii-ws", ubii__lws_on_websocket, 0, RX_CHUNK, 0, NULL, 0},
     {"ubii-http", ubii__lws_on_http, 0, RX_CHUNK, 0, NULL, 0},
     {"ubii-foreign-fd", ubii__lws_on_foreign_fd, 0, 0, 0, NULL, 0},
-    {"ubii-wake", ubii__lws_on_wake, 0, 0, 0, NULL, 0},
     {NULL, NULL, 0, 0, 0, NULL, 0}};
 
 bool ubii__lws_start(ubii_linux_port *port)
@@ -44,7 +43,7 @@ bool ubii__lws_start(ubii_linux_port *port)
         return false;
     }
     port->vhost = LWS(port)->get_vhost_by_name(port->lws, "default");
-    ubii__lws_adopt_wake(port);
+    ubii__lws_adopt_fd(port, &port->wake_fd, port->wake_fd, NULL);
     for (int i = 0; i < UBII_CHANNEL_COUNT; ++i) {
         channel *ch = &port->channels[i];
         if (ch->kind == TRANSPORT_ZMQ) {

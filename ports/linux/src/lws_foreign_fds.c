@@ -1,7 +1,7 @@
 /* Descriptors that are not libwebsockets' own inside its wait: while lws drives the wait, each
- * libzmq socket's fd and each in-thread ZMTP connection's is adopted into it (as a duplicate: lws
- * closes what it adopts), so that their traffic ends lws_service() as well. The owner does its
- * own I/O after the wait. */
+ * libzmq socket's fd, each in-thread ZMTP connection's and the port's wake-up eventfd is adopted
+ * into it (as a duplicate: lws closes what it adopts), so that their traffic ends lws_service()
+ * as well. Their owners do their own I/O after the wait. */
 #define _POSIX_C_SOURCE 200809L /* dup */
 
 #include <stdlib.h>
@@ -39,6 +39,10 @@ void ubii__lws_adopt_fd(ubii_linux_port *port, const void *owner, int fd, void *
         adopted->wsi =
             desc.fd.filefd >= 0 ? LWS(port)->adopt_descriptor_vhost_via_info(&desc) : NULL;
         if (adopted->wsi == NULL) {
+            /* lws closes a file descriptor it failed to adopt only if it is a socket's. */
+            if (desc.fd.filefd >= 0) {
+                close(desc.fd.filefd);
+            }
             port->foreign_fds[i] = NULL;
             free(adopted);
             return;

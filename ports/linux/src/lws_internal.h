@@ -114,11 +114,8 @@ int ubii__lws_on_http(struct lws *wsi, enum lws_callback_reasons reason, void *u
 /* Posts `body` (taken over) on a connection of its own. */
 ubii_status ubii__lws_post_request(ubii_linux_port *port, ubii_channel which, queued_message *body);
 
-/* lws_foreign_fds.c and lws_wake.c: descriptors that end the wait. */
+/* lws_foreign_fds.c: descriptors that end the wait. */
 int ubii__lws_on_foreign_fd(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
                             size_t len);
-int ubii__lws_on_wake(struct lws *wsi, enum lws_callback_reasons reason, void *user, void *in,
-                      size_t len);
-void ubii__lws_adopt_wake(ubii_linux_port *port);
 
 #endif
