@@ -151,6 +151,20 @@ bool pump_until(const ubii_port &port, Peer &peer, const std::function<bool()> &
     return true;
 }
 
+// Opens the topic channel to the peer as client-7 and plays the master's half of the handshake
+// until the channel is OPEN.
+void open_topic(const ubii_port &port, Peer &peer)
+{
+    ASSERT_EQ(port.vtable->open(port.context, UBII_CHANNEL_TOPIC, peer.url().c_str(), "client-7"),
+              UBII_OK);
+    ASSERT_TRUE(
+        pump_until(port, peer, [&] { return peer.connected() && peer.received.size() >= 64; }));
+    peer.send_bytes(peer_handshake("ROUTER"));
+    ASSERT_TRUE(pump_until(port, peer, [&] {
+        return port.vtable->state(port.context, UBII_CHANNEL_TOPIC) == UBII_CHANNEL_OPEN;
+    }));
+}
+
 class InThreadZmtp : public ::testing::Test
 {
   protected:
@@ -179,12 +193,7 @@ class InThreadZmtp : public ::testing::Test
     }
     void open_topic()
     {
-        ASSERT_EQ(
-            port_.vtable->open(port_.context, UBII_CHANNEL_TOPIC, peer_.url().c_str(), "client-7"),
-            UBII_OK);
-        ASSERT_TRUE(pump_until([&] { return peer_.connected() && peer_.received.size() >= 64; }));
-        peer_.send_bytes(peer_handshake("ROUTER"));
-        ASSERT_TRUE(pump_until([&] { return state(UBII_CHANNEL_TOPIC) == UBII_CHANNEL_OPEN; }));
+        ::open_topic(port_, peer_);
     }
     std::vector<std::string> take_all(ubii_channel channel)
     {
@@ -290,15 +299,14 @@ TEST(InThreadZmtpStream, MessagesOfEverySizeInAnySlicesArriveWholeAndInOrder)
     ubii_linux_port *linux_port = nullptr;
     ASSERT_EQ(ubii_linux_port_create(&linux_port, &options), UBII_OK);
     ubii_port port = ubii_linux_port_get(linux_port);
-    ASSERT_EQ(port.vtable->open(port.context, UBII_CHANNEL_TOPIC, peer.url().c_str(), "client-7"),
-              UBII_OK);
+    open_topic(port, peer);
+    if (HasFatalFailure()) {
+        ubii_linux_port_destroy(linux_port);
+        return;
+    }
     auto pump = [&](const std::function<bool()> &done) {
         return pump_until(port, peer, done, std::chrono::seconds(20), 1);
     };
-    ASSERT_TRUE(pump([&] { return peer.connected() && peer.received.size() >= 64; }));
-    peer.send_bytes(peer_handshake("ROUTER"));
-    ASSERT_TRUE(pump(
-        [&] { return port.vtable->state(port.context, UBII_CHANNEL_TOPIC) == UBII_CHANNEL_OPEN; }));
 
     std::mt19937 random(7);
     std::vector<std::string> sent;
@@ -427,16 +435,22 @@ TEST_F(InThreadZmtp, ConnectionRefusedAndClosedByThePeerAreLost)
     EXPECT_TRUE(pump_until([&] { return state(UBII_CHANNEL_TOPIC) == UBII_CHANNEL_LOST; }));
 }
 
-int thread_count()
+// The entries of a /proc folder: the process's threads, or its open fds.
+int entries_in(const char *folder)
 {
     int count = 0;
-    if (DIR *tasks = opendir("/proc/self/task")) {
-        while (const dirent *entry = readdir(tasks)) {
+    if (DIR *entries = opendir(folder)) {
+        while (const dirent *entry = readdir(entries)) {
             count += entry->d_name[0] != '.';
         }
-        closedir(tasks);
+        closedir(entries);
     }
     return count;
+}
+
+int thread_count()
+{
+    return entries_in("/proc/self/task");
 }
 
 // With default options a node adds no thread to the process: tcp:// is spoken in the thread that
@@ -450,27 +464,14 @@ TEST(LinuxPortDefaults, TcpRunsInTheCallersThread)
     ubii_linux_port *linux_port = nullptr;
     ASSERT_EQ(ubii_linux_port_create(&linux_port, &options), UBII_OK);
     ubii_port port = ubii_linux_port_get(linux_port);
-    ASSERT_EQ(port.vtable->open(port.context, UBII_CHANNEL_TOPIC, peer.url().c_str(), "client-7"),
-              UBII_OK);
-    auto pump = [&](const std::function<bool()> &done) { return pump_until(port, peer, done); };
-    ASSERT_TRUE(pump([&] { return peer.connected() && peer.received.size() >= 64; }));
-    peer.send_bytes(peer_handshake("ROUTER"));
-    ASSERT_TRUE(pump(
-        [&] { return port.vtable->state(port.context, UBII_CHANNEL_TOPIC) == UBII_CHANNEL_OPEN; }));
+    open_topic(port, peer);
     EXPECT_EQ(thread_count(), threads_before);
     ubii_linux_port_destroy(linux_port);
 }
 
 int open_fd_count()
 {
-    int count = 0;
-    if (DIR *fds = opendir("/proc/self/fd")) {
-        while (const dirent *entry = readdir(fds)) {
-            count += entry->d_name[0] != '.';
-        }
-        closedir(fds);
-    }
-    return count;
+    return entries_in("/proc/self/fd");
 }
 
 bool libwebsockets_mapped()
